@@ -1,0 +1,1 @@
+"""Denavit: a kinematics service for robot arms."""

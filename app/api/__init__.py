@@ -1,0 +1,8 @@
+"""The HTTP layer: one router module per area, errors in :mod:`app.api.errors`."""
+
+from __future__ import annotations
+
+from app.api import fk, health, jacobian, robots
+
+#: Routers mounted by :func:`app.main.create_app`, in documentation order.
+ROUTERS = [health.router, robots.router, fk.router, jacobian.router]

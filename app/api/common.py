@@ -1,0 +1,103 @@
+"""Pieces every router shares: number types, configurations, poses, fast JSON responses."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+import numpy as np
+import orjson
+from fastapi import Path, Request
+from starlette.concurrency import run_in_threadpool
+from pydantic import BaseModel, ConfigDict, Field, Strict
+from starlette.responses import Response
+
+from app.kinematics.models import RobotModel
+from app.kinematics.rotations import matrix_to_quaternion, matrix_to_rpy
+from app.registry import Registry
+
+#: A finite JSON number (ints accepted; strings, booleans, NaN and ±Infinity rejected).
+Finite = Annotated[float, Strict(), Field(allow_inf_nan=False)]
+Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
+Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
+Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
+Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+
+RobotId = Annotated[str, Path(description="Robot id, as listed by GET /robots.", max_length=64)]
+
+
+class Schema(BaseModel):
+    """Base of request models: unknown fields are errors, numbers must be finite."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
+class ConfigurationIn(Schema):
+    """A configuration: ``q`` in joint order, or a ``joint_positions`` map (not both)."""
+
+    q: list[Finite] | None = Field(
+        None,
+        description="One value per actuated joint, in the order of GET /robots/{id} "
+        "(rad for revolute and continuous joints, m for prismatic ones).",
+        max_length=1024,
+    )
+    joint_positions: dict[str, Finite] | None = Field(
+        None,
+        description="Joint name → value (rad or m); joints not given take their neutral value.",
+        max_length=1024,
+    )
+
+    def config(self, robot: RobotModel) -> np.ndarray:
+        """The validated wire configuration for ``robot``."""
+        return robot.configuration(self.q, self.joint_positions)
+
+
+class Pose(BaseModel):
+    """A frame's placement in the robot's root (world) frame."""
+
+    position: list[float] = Field(description="[x, y, z] in metres.")
+    orientation: list[float] = Field(description="Unit quaternion [x, y, z, w], w ≥ 0.")
+    rpy: list[float] = Field(
+        description="[roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll)."
+    )
+    matrix: list[list[float]] = Field(description="4×4 homogeneous transform (metres).")
+
+
+def pose_json(T: np.ndarray) -> dict[str, Any]:
+    """Wire form of a 4×4 placement."""
+    R = T[:3, :3]
+    return {
+        "position": T[:3, 3].tolist(),
+        "orientation": matrix_to_quaternion(R).tolist(),
+        "rpy": matrix_to_rpy(R).tolist(),
+        "matrix": T.tolist(),
+    }
+
+
+class ORJSONResponse(Response):
+    """JSON via orjson (NumPy arrays serialised natively)."""
+
+    media_type = "application/json"
+
+    def render(self, content: Any) -> bytes:
+        return orjson.dumps(content, option=orjson.OPT_SERIALIZE_NUMPY, default=_fallback)
+
+
+def _fallback(obj: Any) -> Any:
+    if isinstance(obj, np.ndarray):  # non-contiguous views
+        return np.ascontiguousarray(obj)
+    if isinstance(obj, np.generic):
+        return obj.item()
+    raise TypeError(f"cannot serialise {type(obj).__name__}")
+
+
+def registry(request: Request) -> Registry:
+    """The app's robot registry."""
+    return request.app.state.registry
+
+
+async def load_robot(reg: Registry, robot_id: str) -> RobotModel:
+    """The robot's model; a first load (URDF parsing) runs off the event loop."""
+    robot = reg.cached(robot_id)
+    if robot is None:
+        robot = await run_in_threadpool(reg.get, robot_id)
+    return robot

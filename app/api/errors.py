@@ -1,0 +1,175 @@
+"""One error body for the whole API: RFC 9457 problem details.
+
+Every 4xx/5xx answer is ``application/problem+json`` with ``type``, ``title``, ``status``,
+``detail`` and, where one is to blame, the offending ``field`` (dotted path into the request,
+e.g. ``q.3``, ``target.orientation``, ``robot_id``). Unknown names add ``suggestions``;
+validation failures add every ``errors`` entry.
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+import orjson
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from pydantic import BaseModel, Field
+from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.responses import Response
+
+from app.kinematics.errors import (
+    ConflictError,
+    ForbiddenError,
+    InvalidInputError,
+    KinematicsError,
+    UnknownNameError,
+)
+
+log = logging.getLogger("denavit")
+
+PROBLEM_TYPES = "https://denavit.dev/problems/"
+_TITLES = {
+    400: "Bad Request",
+    401: "Unauthorized",
+    403: "Forbidden",
+    404: "Not Found",
+    405: "Method Not Allowed",
+    409: "Conflict",
+    413: "Content Too Large",
+    415: "Unsupported Media Type",
+    422: "Unprocessable Content",
+    500: "Internal Server Error",
+}
+
+
+class FieldError(BaseModel):
+    """One validation failure."""
+
+    field: str = Field(description="Dotted path of the offending value in the request.")
+    message: str = Field(description="Why the value was rejected.")
+
+
+class Problem(BaseModel):
+    """RFC 9457 problem details, the body of every error response."""
+
+    type: str = Field(description="URI identifying the problem type.")
+    title: str = Field(description="Short summary of the problem type.")
+    status: int = Field(description="HTTP status code.")
+    detail: str = Field(description="Explanation specific to this occurrence.")
+    instance: str | None = Field(None, description="The request path.")
+    field: str | None = Field(None, description="The request field to blame, if any.")
+    suggestions: list[str] | None = Field(None, description="Close matches for an unknown name.")
+    errors: list[FieldError] | None = Field(None, description="All validation failures.")
+
+
+def problem(
+    status: int,
+    detail: str,
+    *,
+    kind: str | None = None,
+    field: str | None = None,
+    instance: str | None = None,
+    headers: dict[str, str] | None = None,
+    **extra: Any,
+) -> Response:
+    """A problem-details response."""
+    body: dict[str, Any] = {
+        "type": PROBLEM_TYPES + (kind or str(status)),
+        "title": _TITLES.get(status, "Error"),
+        "status": status,
+        "detail": detail,
+    }
+    if instance:
+        body["instance"] = instance
+    if field is not None:
+        body["field"] = field
+    body.update({k: v for k, v in extra.items() if v is not None})
+    return Response(
+        orjson.dumps(body),
+        status_code=status,
+        media_type="application/problem+json",
+        headers=headers,
+    )
+
+
+def _loc(loc: tuple[Any, ...] | list[Any]) -> str:
+    parts = [str(p) for p in loc]
+    if parts and parts[0] in {"body", "query", "path", "header"}:
+        parts = parts[1:]
+    return ".".join(parts) or "body"
+
+
+_STATUS = {
+    UnknownNameError: (404, "unknown-name"),
+    ConflictError: (409, "conflict"),
+    ForbiddenError: (403, "forbidden"),
+    InvalidInputError: (422, "invalid-input"),
+}
+
+
+def install(app: FastAPI) -> None:
+    """Register the handlers that turn every error into a problem response."""
+
+    @app.exception_handler(KinematicsError)
+    async def _kinematics(request: Request, exc: KinematicsError) -> Response:
+        status, kind = _STATUS.get(type(exc), (422, "invalid-input"))
+        detail = f"{exc.field}: {exc.message}" if exc.field else exc.message
+        return problem(
+            status,
+            detail,
+            kind=kind,
+            field=exc.field,
+            instance=request.url.path,
+            suggestions=getattr(exc, "suggestions", None),
+        )
+
+    @app.exception_handler(RequestValidationError)
+    async def _validation(request: Request, exc: RequestValidationError) -> Response:
+        errs = exc.errors()
+        if any(e.get("type") == "json_invalid" for e in errs):
+            e = next(e for e in errs if e.get("type") == "json_invalid")
+            ctx = e.get("ctx") or {}
+            return problem(
+                400,
+                f"body: malformed JSON ({ctx.get('error', e.get('msg'))})",
+                kind="malformed-json",
+                field="body",
+                instance=request.url.path,
+            )
+        items = [{"field": _loc(e["loc"]), "message": e["msg"]} for e in errs]
+        first = items[0] if items else {"field": "body", "message": "invalid request"}
+        more = f" (and {len(items) - 1} more)" if len(items) > 1 else ""
+        return problem(
+            422,
+            f"{first['field']}: {first['message']}{more}",
+            kind="validation-error",
+            field=first["field"],
+            instance=request.url.path,
+            errors=items[:50],
+        )
+
+    @app.exception_handler(StarletteHTTPException)
+    async def _http(request: Request, exc: StarletteHTTPException) -> Response:
+        return problem(
+            exc.status_code,
+            str(exc.detail),
+            instance=request.url.path,
+            headers=getattr(exc, "headers", None),
+        )
+
+    @app.exception_handler(Exception)
+    async def _unexpected(request: Request, exc: Exception) -> Response:  # pragma: no cover
+        log.exception("unhandled error on %s", request.url.path)
+        return problem(500, "internal error", instance=request.url.path)
+
+
+#: OpenAPI description of the error responses, for ``responses=`` on routes.
+ERROR_RESPONSES: dict[int | str, dict[str, Any]] = {
+    code: {"model": Problem, "content": {"application/problem+json": {}}, "description": text}
+    for code, text in {
+        400: "Malformed request body.",
+        404: "Unknown robot, frame or joint.",
+        422: "A field failed validation; `field` names it.",
+    }.items()
+}

@@ -1,0 +1,126 @@
+"""Forward kinematics: POST /robots/{robot_id}/fk and /fk/batch."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import numpy as np
+from fastapi import APIRouter, Depends
+from pydantic import BaseModel, Field
+
+from app.api.common import (
+    ConfigurationIn,
+    Finite,
+    ORJSONResponse,
+    Pose,
+    RobotId,
+    Schema,
+    load_robot,
+    pose_json,
+    registry,
+)
+from app.api.errors import ERROR_RESPONSES
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
+from app.registry import Registry
+from app.settings import get_settings
+
+router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
+
+
+class FKRequest(ConfigurationIn):
+    """Configuration and the frames to place."""
+
+    frames: list[str] | None = Field(
+        None,
+        description='Frame names; default the end effector; ["*"] for every frame.',
+        max_length=4096,
+    )
+
+
+class FKResponse(BaseModel):
+    """Frame poses in the root frame."""
+
+    robot_id: str
+    q: list[float] = Field(description="The configuration used, in joint order.")
+    poses: dict[str, Pose] = Field(description="Frame name → pose in the root frame.")
+    within_limits: bool = Field(description="Whether every joint lies within its limits.")
+    joints_outside_limits: list[str] = Field(description="Joints outside their limits.")
+
+
+class FKBatchRequest(Schema):
+    """Many configurations, one frame."""
+
+    configurations: list[list[Finite]] = Field(
+        description="N configurations, each one value per joint in joint order (rad, m).",
+    )
+    frame: str | None = Field(None, description="Frame to place; default the end effector.")
+
+
+class FKBatchResponse(BaseModel):
+    """Compact arrays, row i for configuration i."""
+
+    robot_id: str
+    frame: str
+    positions: list[list[float]] = Field(description="N×3 positions (m) in the root frame.")
+    orientations: list[list[float]] = Field(description="N×4 quaternions [x, y, z, w].")
+
+
+@router.post(
+    "/fk",
+    operation_id="compute_fk",
+    response_model=FKResponse,
+    responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+)
+async def compute_fk(
+    robot_id: RobotId, body: FKRequest, reg: Annotated[Registry, Depends(registry)]
+) -> ORJSONResponse:
+    """Poses of frames at one configuration.
+
+    Out-of-limit configurations are computed, and flagged with ``within_limits: false``.
+    """
+    robot = await load_robot(reg, robot_id)
+    q = body.config(robot)
+    frames = body.frames if body.frames else [robot.ee_frame]
+    poses = forward_kinematics(robot, q, frames)
+    outside = robot.limit_violations(q)
+    return ORJSONResponse(
+        {
+            "robot_id": robot.id,
+            "q": q.tolist(),
+            "poses": {name: pose_json(T) for name, T in poses.items()},
+            "within_limits": not outside,
+            "joints_outside_limits": outside,
+        }
+    )
+
+
+@router.post(
+    "/fk/batch",
+    operation_id="compute_fk_batch",
+    response_model=FKBatchResponse,
+    responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+)
+def compute_fk_batch(
+    robot_id: RobotId, body: FKBatchRequest, reg: Annotated[Registry, Depends(registry)]
+) -> ORJSONResponse:
+    """Position and orientation of one frame for many configurations (thread pool)."""
+    robot = reg.get(robot_id)
+    limit = get_settings().max_batch
+    n = len(body.configurations)
+    if n > limit:
+        raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
+    if n == 0:
+        raise InvalidInputError("give at least one configuration", "configurations")
+    for i, row in enumerate(body.configurations):
+        if len(row) != robot.n:
+            raise InvalidInputError(
+                f"expected {robot.n} values (one per joint), got {len(row)}",
+                f"configurations.{i}",
+            )
+    frame = body.frame or robot.ee_frame
+    qs = np.array(body.configurations, dtype=float)
+    positions, quats = forward_kinematics_batch(robot, qs, frame)
+    return ORJSONResponse(
+        {"robot_id": robot.id, "frame": frame, "positions": positions, "orientations": quats}
+    )

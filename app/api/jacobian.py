@@ -1,0 +1,65 @@
+"""POST /robots/{robot_id}/jacobian: the 6×n geometric Jacobian of a frame."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from fastapi import APIRouter, Depends
+from pydantic import BaseModel, Field
+
+from app.api.common import ConfigurationIn, ORJSONResponse, RobotId, load_robot, registry
+from app.api.errors import ERROR_RESPONSES
+from app.kinematics.jacobian import Reference, frame_jacobian
+from app.registry import Registry
+
+router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
+
+REFERENCE_DOC = (
+    "world (default): origin velocity and angular velocity in world axes (Pinocchio "
+    "LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's "
+    "own axes (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD)."
+)
+
+
+class JacobianRequest(ConfigurationIn):
+    """Configuration, frame and reference."""
+
+    frame: str | None = Field(None, description="Frame; default the end effector.")
+    reference: Reference = Field("world", description=REFERENCE_DOC)
+
+
+class JacobianResponse(BaseModel):
+    """The Jacobian, rows [vx, vy, vz, ωx, ωy, ωz], columns in joint order."""
+
+    robot_id: str
+    frame: str
+    reference: str
+    q: list[float]
+    jacobian: list[list[float]] = Field(description="6×n; linear rows in m/rad or m/m.")
+    joint_names: list[str] = Field(description="The joint of each column.")
+
+
+@router.post(
+    "/jacobian",
+    operation_id="compute_jacobian",
+    response_model=JacobianResponse,
+    responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+)
+async def compute_jacobian(
+    robot_id: RobotId, body: JacobianRequest, reg: Annotated[Registry, Depends(registry)]
+) -> ORJSONResponse:
+    """Geometric Jacobian of a frame at one configuration."""
+    robot = await load_robot(reg, robot_id)
+    q = body.config(robot)
+    frame = body.frame or robot.ee_frame
+    J = frame_jacobian(robot, q, frame, body.reference)
+    return ORJSONResponse(
+        {
+            "robot_id": robot.id,
+            "frame": frame,
+            "reference": body.reference,
+            "q": q,
+            "jacobian": J,
+            "joint_names": robot.joint_names,
+        }
+    )

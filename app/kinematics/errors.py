@@ -1,0 +1,43 @@
+"""Errors raised by the kinematics core.
+
+The core knows nothing of HTTP; the API layer (``app.api.errors``) maps each class to a
+status code and an RFC 9457 problem body. Every error names the offending ``field`` (a
+dotted path such as ``q.3`` or ``target.orientation``) so a client can point at it.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class KinematicsError(Exception):
+    """Base class: a request the core cannot answer, with the field to blame."""
+
+    def __init__(self, message: str, field: str | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.field = field
+
+
+class InvalidInputError(KinematicsError):
+    """A value is malformed: wrong length, not finite, out of its domain."""
+
+
+class UnknownNameError(KinematicsError):
+    """A robot, frame or joint name that does not exist, with close matches."""
+
+    def __init__(self, kind: str, name: str, field: str, candidates: Iterable[str]) -> None:
+        self.kind = kind
+        self.name = name
+        self.suggestions = difflib.get_close_matches(name, list(candidates), n=5, cutoff=0.5)
+        hint = f"; did you mean {', '.join(map(repr, self.suggestions))}?" if self.suggestions else ""
+        super().__init__(f"unknown {kind} {name!r}{hint}", field)
+
+
+class ConflictError(KinematicsError):
+    """The request clashes with the current state (e.g. a robot id already taken)."""
+
+
+class ForbiddenError(KinematicsError):
+    """The operation is not allowed on this resource (e.g. deleting a built-in robot)."""

@@ -1,0 +1,386 @@
+"""Robot models: a Pinocchio model plus what the wire needs to talk about it.
+
+A :class:`RobotModel` wraps one ``pinocchio.Model`` built from URDF text and adds
+
+- the actuated joints in Pinocchio's order, with their URDF description (parent and child
+  link, axis, limits), skipping mimic joints, which follow their leader;
+- the conversion between *wire* configurations (one value per actuated joint, a continuous
+  joint as one angle in radians) and Pinocchio configurations (a continuous joint is stored
+  as (cos θ, sin θ), so ``nq != nv``);
+- frame lookup by name (links first, then fixed frames, then joint frames);
+- a per-thread ``pinocchio.Data``: Data is scratch space and is never shared between
+  threads, so concurrent requests cannot corrupt each other.
+
+Everything here is plain Python: no FastAPI.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pinocchio as pin
+from defusedxml import ElementTree
+
+from app.kinematics.errors import InvalidInputError, UnknownNameError
+
+#: Frame types in the order a name is resolved when several frames share it.
+_FRAME_PRIORITY = {
+    pin.FrameType.BODY: 0,
+    pin.FrameType.FIXED_JOINT: 1,
+    pin.FrameType.JOINT: 2,
+    pin.FrameType.OP_FRAME: 3,
+    pin.FrameType.SENSOR: 4,
+}
+_FRAME_KIND = {
+    pin.FrameType.BODY: "link",
+    pin.FrameType.FIXED_JOINT: "fixed",
+    pin.FrameType.JOINT: "joint",
+    pin.FrameType.OP_FRAME: "operational",
+    pin.FrameType.SENSOR: "sensor",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    """One actuated joint, as the URDF describes it.
+
+    Limits are SI (rad or m); ``lower``/``upper`` are ``None`` for a continuous joint.
+    ``axis`` is the URDF axis, expressed in the joint frame.
+    """
+
+    name: str
+    type: str  # revolute | prismatic | continuous
+    parent: str
+    child: str
+    axis: tuple[float, float, float]
+    lower: float | None
+    upper: float | None
+    velocity: float | None
+    effort: float | None
+    continuous: bool
+    index: int  # position in wire configurations
+    pin_id: int  # Pinocchio joint id
+    idx_q: int  # first index in Pinocchio's q
+    idx_v: int  # index in Pinocchio's v (and Jacobian column)
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    """A named frame: a link, a fixed frame (URDF fixed joint) or a joint frame."""
+
+    name: str
+    kind: str
+    pin_id: int
+    parent_joint: str | None
+
+
+def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:
+    if not text:
+        return default
+    return tuple(float(v) for v in text.split())
+
+
+def parse_urdf_joints(urdf_text: str) -> dict[str, dict[str, Any]]:
+    """Joint descriptions from URDF text (parsed with defusedxml), keyed by joint name."""
+    root = ElementTree.fromstring(urdf_text)
+    joints: dict[str, dict[str, Any]] = {}
+    for j in root.iter("joint"):
+        name = j.get("name")
+        if not name or j.find("parent") is None:  # transmission joints have no parent
+            continue
+        limit = j.find("limit")
+        axis = j.find("axis")
+
+        def lim(attr: str, limit: Any = limit) -> float | None:
+            if limit is None or limit.get(attr) is None:
+                return None
+            return float(limit.get(attr))
+
+        joints[name] = {
+            "type": j.get("type"),
+            "parent": j.find("parent").get("link"),
+            "child": j.find("child").get("link"),
+            "axis": _floats(axis.get("xyz") if axis is not None else None, (1.0, 0.0, 0.0)),
+            "lower": lim("lower"),
+            "upper": lim("upper"),
+            "velocity": lim("velocity"),
+            "effort": lim("effort"),
+            "mimic": j.find("mimic") is not None,
+        }
+    return joints
+
+
+class RobotModel:
+    """A robot the service can answer for.
+
+    Parameters
+    ----------
+    robot_id
+        Identifier used in URLs.
+    urdf_text
+        The URDF document.
+    name, source
+        Human-readable name and origin (``example-robot-data``, ``dh``, ``upload``).
+    package_dirs
+        Directories ``package://`` mesh URIs resolve against.
+    srdf_text
+        Optional SRDF (disabled collision pairs), used by the collision module.
+    ee_frame
+        Default end-effector frame; when ``None``, the deepest link of the chain.
+    """
+
+    def __init__(
+        self,
+        robot_id: str,
+        urdf_text: str,
+        *,
+        name: str | None = None,
+        source: str = "upload",
+        package_dirs: Sequence[str] = (),
+        srdf_text: str | None = None,
+        ee_frame: str | None = None,
+        description: str = "",
+    ) -> None:
+        self.id = robot_id
+        self.name = name or robot_id
+        self.source = source
+        self.description = description
+        self.urdf_text = urdf_text
+        self.srdf_text = srdf_text
+        self.package_dirs = list(package_dirs)
+        self.model: pin.Model = pin.buildModelFromXML(urdf_text, mimic=True)
+        self._local = threading.local()
+        self._lock = threading.Lock()
+        self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
+
+        urdf_joints = parse_urdf_joints(urdf_text)
+        self.has_collision_geometry = "<collision" in urdf_text
+        self.joints: list[Joint] = []
+        for jid in range(1, self.model.njoints):
+            jm = self.model.joints[jid]
+            if jm.shortname() == "JointModelMimic":
+                continue
+            jname = self.model.names[jid]
+            desc = urdf_joints.get(jname, {})
+            continuous = jm.nq == 2 and jm.nv == 1
+            jtype = desc.get("type") or ("continuous" if continuous else "revolute")
+            if continuous:
+                jtype = "continuous"
+            lower = upper = None
+            if not continuous:
+                lower = float(self.model.lowerPositionLimit[jm.idx_q])
+                upper = float(self.model.upperPositionLimit[jm.idx_q])
+            vel = float(self.model.velocityLimit[jm.idx_v])
+            eff = float(self.model.effortLimit[jm.idx_v])
+            self.joints.append(
+                Joint(
+                    name=jname,
+                    type=jtype,
+                    parent=desc.get("parent", ""),
+                    child=desc.get("child", ""),
+                    axis=tuple(desc.get("axis", (1.0, 0.0, 0.0))),
+                    lower=lower,
+                    upper=upper,
+                    velocity=vel if math.isfinite(vel) else None,
+                    effort=eff if math.isfinite(eff) else None,
+                    continuous=continuous,
+                    index=len(self.joints),
+                    pin_id=jid,
+                    idx_q=jm.idx_q,
+                    idx_v=jm.idx_v,
+                )
+            )
+        self.joint_names = [j.name for j in self.joints]
+        self._joint_index = {j.name: j.index for j in self.joints}
+        self.n = len(self.joints)
+
+        cont = np.array([j.continuous for j in self.joints], dtype=bool)
+        self._cont_mask = cont
+        self._plain_wire = np.flatnonzero(~cont)
+        self._plain_q = np.array([j.idx_q for j in self.joints if not j.continuous], dtype=int)
+        self._cont_wire = np.flatnonzero(cont)
+        self._cont_q = np.array([j.idx_q for j in self.joints if j.continuous], dtype=int)
+        #: Columns of Pinocchio's nv-wide Jacobian that belong to the wire joints.
+        self.v_index = np.array([j.idx_v for j in self.joints], dtype=int)
+        self.has_continuous = bool(cont.any())
+        self.lower = np.array([-np.inf if j.lower is None else j.lower for j in self.joints])
+        self.upper = np.array([np.inf if j.upper is None else j.upper for j in self.joints])
+
+        self.frames: list[Frame] = []
+        best: dict[str, int] = {}
+        for fid, f in enumerate(self.model.frames):
+            if f.name == "universe":
+                continue
+            prev = best.get(f.name)
+            if prev is None or _FRAME_PRIORITY[f.type] < _FRAME_PRIORITY[self.model.frames[prev].type]:
+                best[f.name] = fid
+        for fname, fid in best.items():
+            f = self.model.frames[fid]
+            pj = self.model.names[f.parentJoint] if f.parentJoint > 0 else None
+            self.frames.append(Frame(fname, _FRAME_KIND[f.type], fid, pj))
+        self._frame_ids = best
+        self.frame_names = [f.name for f in self.frames]
+        self.ee_frame = ee_frame if ee_frame is not None else self._deepest_link()
+        self.frame_id(self.ee_frame, field="ee_frame")
+
+    # ------------------------------------------------------------------ frames and joints
+    def _deepest_link(self) -> str:
+        """The link with the most joints between it and the root (last one on ties)."""
+        depth = {0: 0}
+        for jid in range(1, self.model.njoints):
+            depth[jid] = depth[self.model.parents[jid]] + 1
+        links = [f for f in self.frames if f.kind == "link"] or self.frames
+        return max(
+            links, key=lambda f: (depth[self.model.frames[f.pin_id].parentJoint], f.pin_id)
+        ).name
+
+    def frame_id(self, name: str, field: str = "frame") -> int:
+        """Pinocchio frame id of ``name``; raises :class:`UnknownNameError`."""
+        try:
+            return self._frame_ids[name]
+        except KeyError:
+            raise UnknownNameError("frame", name, field, self.frame_names) from None
+
+    def joint_index(self, name: str, field: str = "joint_positions") -> int:
+        """Wire index of joint ``name``; raises :class:`UnknownNameError`."""
+        try:
+            return self._joint_index[name]
+        except KeyError:
+            raise UnknownNameError("joint", name, field, self.joint_names) from None
+
+    def supporting_joints(self, frame: str) -> np.ndarray:
+        """Wire indices of the joints that move ``frame`` (its kinematic chain)."""
+        parent = self.model.frames[self.frame_id(frame)].parentJoint
+        support = set(self.model.supports[parent])
+        return np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
+
+    # --------------------------------------------------------------------- configurations
+    @property
+    def data(self) -> pin.Data:
+        """This thread's Pinocchio Data for the model (created on first use)."""
+        d = getattr(self._local, "data", None)
+        if d is None:
+            d = self._local.data = self.model.createData()
+        return d
+
+    def neutral(self) -> np.ndarray:
+        """Neutral configuration on the wire: 0 where allowed, else the nearest limit."""
+        return np.clip(np.zeros(self.n), self.lower, self.upper)
+
+    def mid_range(self) -> np.ndarray:
+        """Middle of the joint limits (0 for continuous joints)."""
+        lo = np.where(np.isfinite(self.lower), self.lower, 0.0)
+        hi = np.where(np.isfinite(self.upper), self.upper, 0.0)
+        return 0.5 * (lo + hi)
+
+    def to_pin(self, q: np.ndarray) -> np.ndarray:
+        """Wire configuration (n,) → Pinocchio configuration (nq,)."""
+        out = np.empty(self.model.nq)
+        out[self._plain_q] = q[self._plain_wire]
+        if self.has_continuous:
+            th = q[self._cont_wire]
+            out[self._cont_q] = np.cos(th)
+            out[self._cont_q + 1] = np.sin(th)
+        return out
+
+    def to_pin_batch(self, qs: np.ndarray) -> np.ndarray:
+        """Wire configurations (N, n) → Pinocchio configurations (N, nq)."""
+        out = np.empty((qs.shape[0], self.model.nq))
+        out[:, self._plain_q] = qs[:, self._plain_wire]
+        if self.has_continuous:
+            th = qs[:, self._cont_wire]
+            out[:, self._cont_q] = np.cos(th)
+            out[:, self._cont_q + 1] = np.sin(th)
+        return out
+
+    def from_pin(self, q_pin: np.ndarray) -> np.ndarray:
+        """Pinocchio configuration (nq,) → wire configuration (n,); angles in (−π, π]."""
+        out = np.empty(self.n)
+        out[self._plain_wire] = q_pin[self._plain_q]
+        if self.has_continuous:
+            out[self._cont_wire] = np.arctan2(q_pin[self._cont_q + 1], q_pin[self._cont_q])
+        return out
+
+    def configuration(
+        self,
+        q: Sequence[float] | np.ndarray | None = None,
+        joint_positions: Mapping[str, float] | None = None,
+        *,
+        field: str = "q",
+        map_field: str = "joint_positions",
+    ) -> np.ndarray:
+        """A validated wire configuration from a list or a name → value map.
+
+        Joints missing from ``joint_positions`` take their neutral value. Giving both forms
+        or a list of the wrong length raises :class:`InvalidInputError`.
+        """
+        if q is not None and joint_positions is not None:
+            raise InvalidInputError(f"give either {field} or {map_field}, not both", field)
+        if q is None:
+            out = self.neutral()
+            for name, value in (joint_positions or {}).items():
+                idx = self.joint_index(name, field=f"{map_field}.{name}")
+                if not math.isfinite(value):
+                    raise InvalidInputError("must be a finite number", f"{map_field}.{name}")
+                out[idx] = value
+            return out
+        arr = np.asarray(q, dtype=float)
+        if arr.ndim != 1 or arr.shape[0] != self.n:
+            raise InvalidInputError(
+                f"expected {self.n} values (one per joint: {', '.join(self.joint_names)}), "
+                f"got {arr.shape[0] if arr.ndim == 1 else arr.shape}",
+                field,
+            )
+        bad = np.flatnonzero(~np.isfinite(arr))
+        if bad.size:
+            raise InvalidInputError("must be a finite number", f"{field}.{int(bad[0])}")
+        return arr
+
+    def limit_violations(self, q: np.ndarray, tol: float = 1e-12) -> list[str]:
+        """Names of the joints whose value lies outside [lower, upper] (beyond ``tol``)."""
+        bad = (q < self.lower - tol) | (q > self.upper + tol)
+        return [self.joint_names[i] for i in np.flatnonzero(bad)]
+
+    def describe_joint(self, joint: Joint) -> dict[str, Any]:
+        """The wire description of a joint."""
+        return {
+            "name": joint.name,
+            "type": joint.type,
+            "parent": joint.parent,
+            "child": joint.child,
+            "axis": list(joint.axis),
+            "limits": {
+                "lower": joint.lower,
+                "upper": joint.upper,
+                "velocity": joint.velocity,
+                "effort": joint.effort,
+            },
+            "continuous": joint.continuous,
+        }
+
+    def lazy(self, key: str, build: Any) -> Any:
+        """A companion object built once per model under a lock (e.g. collision model)."""
+        value = self.extras.get(key)
+        if value is None:
+            with self._lock:
+                value = self.extras.get(key)
+                if value is None:
+                    value = self.extras[key] = build(self)
+        return value
+
+
+@dataclass
+class RobotSummary:
+    """What GET /robots lists without loading the model."""
+
+    id: str
+    name: str
+    source: str
+    joints: int
+    description: str = ""
+    extra: dict[str, Any] = field(default_factory=dict)
