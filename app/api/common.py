@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+import asyncio
+import functools
+import os
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from typing import Annotated, Any, TypeVar
 
 import numpy as np
 import orjson
 from fastapi import Path, Request
-from starlette.concurrency import run_in_threadpool
 from pydantic import BaseModel, ConfigDict, Field, Strict
+from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
 from app.kinematics.models import RobotModel
@@ -21,6 +26,8 @@ Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
 Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+
+T = TypeVar("T")
 
 RobotId = Annotated[str, Path(description="Robot id, as listed by GET /robots.", max_length=64)]
 
@@ -101,3 +108,24 @@ async def load_robot(reg: Registry, robot_id: str) -> RobotModel:
     if robot is None:
         robot = await run_in_threadpool(reg.get, robot_id)
     return robot
+
+
+_POOL: ThreadPoolExecutor | None = None
+
+
+def pool() -> ThreadPoolExecutor:
+    """The bounded pool for long work (IK with big budgets, batches, reachability).
+
+    One worker per core: Pinocchio work holds the GIL for short stretches only, and the
+    event loop stays free for sub-millisecond endpoints and /health.
+    """
+    global _POOL
+    if _POOL is None:
+        _POOL = ThreadPoolExecutor(max_workers=os.cpu_count() or 2, thread_name_prefix="work")
+    return _POOL
+
+
+async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    """Run ``fn(*args, **kwargs)`` in the bounded pool and await its result."""
+    loop = asyncio.get_running_loop()
+    return await loop.run_in_executor(pool(), functools.partial(fn, *args, **kwargs))

@@ -31,7 +31,9 @@ class UnknownNameError(KinematicsError):
         self.kind = kind
         self.name = name
         self.suggestions = difflib.get_close_matches(name, list(candidates), n=5, cutoff=0.5)
-        hint = f"; did you mean {', '.join(map(repr, self.suggestions))}?" if self.suggestions else ""
+        hint = (
+            f"; did you mean {', '.join(map(repr, self.suggestions))}?" if self.suggestions else ""
+        )
         super().__init__(f"unknown {kind} {name!r}{hint}", field)
 
 

@@ -217,7 +217,10 @@ class RobotModel:
             if f.name == "universe":
                 continue
             prev = best.get(f.name)
-            if prev is None or _FRAME_PRIORITY[f.type] < _FRAME_PRIORITY[self.model.frames[prev].type]:
+            if (
+                prev is None
+                or _FRAME_PRIORITY[f.type] < _FRAME_PRIORITY[self.model.frames[prev].type]
+            ):
                 best[f.name] = fid
         for fname, fid in best.items():
             f = self.model.frames[fid]

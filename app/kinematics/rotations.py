@@ -19,7 +19,12 @@ def matrix_to_quaternion(R: np.ndarray) -> np.ndarray:
     R = np.asarray(R, dtype=float)
     m00, m11, m22 = R[..., 0, 0], R[..., 1, 1], R[..., 2, 2]
     cand = np.stack(
-        [1.0 + m00 + m11 + m22, 1.0 + m00 - m11 - m22, 1.0 - m00 + m11 - m22, 1.0 - m00 - m11 + m22],
+        [
+            1.0 + m00 + m11 + m22,
+            1.0 + m00 - m11 - m22,
+            1.0 - m00 + m11 - m22,
+            1.0 - m00 - m11 + m22,
+        ],
         axis=-1,
     )
     k = np.argmax(cand, axis=-1)
