@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -12,8 +11,6 @@ from fastapi.testclient import TestClient
 from app.main import create_app
 from app.registry import Registry
 from app.settings import Settings
-
-warnings.filterwarnings("ignore", message=".*httpx.*", category=DeprecationWarning)
 
 
 @pytest.fixture

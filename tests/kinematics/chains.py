@@ -1,0 +1,79 @@
+"""Small hand-written URDF chains with known closed forms (independent of dh2urdf)."""
+
+from __future__ import annotations
+
+
+def planar_2link(l1: float = 1.0, l2: float = 0.7) -> str:
+    """Two revolute z joints, links along x: x = l1c1 + l2c12, y = l1s1 + l2s12."""
+    return f"""<?xml version="1.0"?>
+<robot name="planar2">
+  <link name="base"/>
+  <link name="link1"/>
+  <link name="link2"/>
+  <link name="tip"/>
+  <joint name="j1" type="revolute">
+    <parent link="base"/><child link="link1"/>
+    <origin xyz="0 0 0" rpy="0 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
+  </joint>
+  <joint name="j2" type="revolute">
+    <parent link="link1"/><child link="link2"/>
+    <origin xyz="{l1!r} 0 0" rpy="0 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
+  </joint>
+  <joint name="tip_joint" type="fixed">
+    <parent link="link2"/><child link="tip"/>
+    <origin xyz="{l2!r} 0 0" rpy="0 0 0"/>
+  </joint>
+</robot>"""
+
+
+def rrp_like(d_base: float = 0.4, a1: float = 0.3) -> str:
+    """Revolute z, revolute y (offset along x), prismatic along the second link's x.
+
+    A revolute-and-prismatic chain for the course's geometric Jacobian construction.
+    """
+    return f"""<?xml version="1.0"?>
+<robot name="rrp">
+  <link name="base"/>
+  <link name="l1"/>
+  <link name="l2"/>
+  <link name="l3"/>
+  <link name="tip"/>
+  <joint name="j1" type="revolute">
+    <parent link="base"/><child link="l1"/>
+    <origin xyz="0 0 {d_base!r}" rpy="0 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" velocity="1" effort="1"/>
+  </joint>
+  <joint name="j2" type="revolute">
+    <parent link="l1"/><child link="l2"/>
+    <origin xyz="{a1!r} 0 0.05" rpy="0.3 0 0"/><axis xyz="0 1 0"/>
+    <limit lower="-3" upper="3" velocity="1" effort="1"/>
+  </joint>
+  <joint name="j3" type="prismatic">
+    <parent link="l2"/><child link="l3"/>
+    <origin xyz="0.1 0 0" rpy="0 0 0"/><axis xyz="1 0 0"/>
+    <limit lower="0" upper="1" velocity="1" effort="1"/>
+  </joint>
+  <joint name="tip_joint" type="fixed">
+    <parent link="l3"/><child link="tip"/>
+    <origin xyz="0.05 0.02 0" rpy="0 0.2 0"/>
+  </joint>
+</robot>"""
+
+
+def continuous_arm() -> str:
+    """A continuous joint then a revolute one (nq = 3, nv = 2 in Pinocchio)."""
+    return """<?xml version="1.0"?>
+<robot name="cont">
+  <link name="base"/><link name="l1"/><link name="l2"/>
+  <joint name="c1" type="continuous">
+    <parent link="base"/><child link="l1"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/>
+  </joint>
+  <joint name="r2" type="revolute">
+    <parent link="l1"/><child link="l2"/>
+    <origin xyz="0.5 0 0"/><axis xyz="0 1 0"/>
+    <limit lower="-1" upper="1" velocity="1" effort="1"/>
+  </joint>
+</robot>"""
