@@ -19,6 +19,7 @@ from starlette.responses import Response
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion, matrix_to_rpy
 from app.registry import Registry
+from app.settings import Settings
 
 #: A finite JSON number (ints accepted; strings, booleans, NaN and ±Infinity rejected).
 Finite = Annotated[float, Strict(), Field(allow_inf_nan=False)]
@@ -100,6 +101,11 @@ def _fallback(obj: Any) -> Any:
 def registry(request: Request) -> Registry:
     """The app's robot registry."""
     return request.app.state.registry
+
+
+def app_settings(request: Request) -> Settings:
+    """The app's settings (those given to ``create_app``)."""
+    return request.app.state.settings
 
 
 async def load_robot(reg: Registry, robot_id: str) -> RobotModel:

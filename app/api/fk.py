@@ -15,6 +15,7 @@ from app.api.common import (
     Pose,
     RobotId,
     Schema,
+    app_settings,
     load_robot,
     pose_json,
     registry,
@@ -23,7 +24,7 @@ from app.api.errors import ERROR_RESPONSES
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
 from app.registry import Registry
-from app.settings import get_settings
+from app.settings import Settings
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
@@ -102,11 +103,14 @@ async def compute_fk(
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 def compute_fk_batch(
-    robot_id: RobotId, body: FKBatchRequest, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId,
+    body: FKBatchRequest,
+    reg: Annotated[Registry, Depends(registry)],
+    settings: Annotated[Settings, Depends(app_settings)],
 ) -> ORJSONResponse:
     """Position and orientation of one frame for many configurations (thread pool)."""
     robot = reg.get(robot_id)
-    limit = get_settings().max_batch
+    limit = settings.max_batch
     n = len(body.configurations)
     if n > limit:
         raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
