@@ -6,6 +6,7 @@ from fastapi import FastAPI
 
 from app import api
 from app.api import errors
+from app.api.common import EXTRA_SCHEMAS
 from app.registry import Registry
 from app.settings import Settings, get_settings
 
@@ -28,7 +29,25 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)
+    _document_self_decoded_bodies(app)
     return app
+
+
+def _document_self_decoded_bodies(app: FastAPI) -> None:
+    """Add the request models of routes that decode their own bodies to the schema."""
+    build = app.openapi
+
+    def openapi() -> dict:
+        if app.openapi_schema is None:
+            schema = build()  # FastAPI caches it in app.openapi_schema
+            components = schema.setdefault("components", {}).setdefault("schemas", {})
+            for model in EXTRA_SCHEMAS:
+                defs = model.model_json_schema(ref_template="#/components/schemas/{model}")
+                components.update(defs.pop("$defs", {}))
+                components[model.__name__] = defs
+        return app.openapi_schema
+
+    app.openapi = openapi
 
 
 app = create_app()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import asyncio
 import functools
+import json
 import os
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -12,10 +13,12 @@ from typing import Annotated, Any, TypeVar
 import numpy as np
 import orjson
 from fastapi import Path, Request
-from pydantic import BaseModel, ConfigDict, Field, Strict
+from fastapi.exceptions import RequestValidationError
+from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
+from app.api.errors import MalformedBodyError
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion, matrix_to_rpy
 from app.registry import Registry
@@ -29,6 +32,7 @@ Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
 
 T = TypeVar("T")
+S = TypeVar("S", bound=BaseModel)
 
 RobotId = Annotated[str, Path(description="Robot id, as listed by GET /robots.", max_length=64)]
 
@@ -135,3 +139,61 @@ async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
     """Run ``fn(*args, **kwargs)`` in the bounded pool and await its result."""
     loop = asyncio.get_running_loop()
     return await loop.run_in_executor(pool(), functools.partial(fn, *args, **kwargs))
+
+
+def parse_json(raw: bytes) -> Any:
+    """Decode a JSON body: orjson, or the standard library for NaN/Infinity tokens.
+
+    The standard library accepts NaN and ±Infinity (not JSON, but what many clients send);
+    the request models then reject them with the field's name. Anything else that does not
+    decode is a 400 naming the body.
+    """
+    try:
+        return orjson.loads(raw)
+    except orjson.JSONDecodeError:
+        try:
+            return json.loads(raw)
+        except (ValueError, UnicodeDecodeError) as exc:
+            raise MalformedBodyError(f"body: malformed JSON ({exc})") from None
+
+
+def validate_body(model: type[S], obj: Any) -> S:
+    """Validate a decoded body against a request model, errors as FastAPI's (HTTP 422)."""
+    try:
+        return model.model_validate(obj)
+    except ValidationError as exc:
+        raise RequestValidationError(
+            [{**e, "loc": ("body", *e["loc"])} for e in exc.errors(include_url=False)]
+        ) from None
+
+
+def finite_matrix(obj: Any, width: int | None = None) -> np.ndarray | None:
+    """A list of lists of JSON numbers as an (N, width) float array, or ``None``.
+
+    The fast path for big batches: ``None`` whenever anything is off (ragged rows,
+    non-numbers, booleans, non-finite values, wrong width), so the caller can fall back to
+    full validation, which names the offending element.
+    """
+    if not isinstance(obj, list) or not obj:
+        return None
+    try:
+        arr = np.array(obj)
+    except (ValueError, TypeError, OverflowError):
+        return None
+    if arr.ndim != 2 or arr.dtype.kind not in "if" or (width is not None and arr.shape[1] != width):
+        return None
+    arr = arr.astype(float, copy=False)
+    if not np.isfinite(arr).all():
+        return None
+    return arr
+
+
+def body_schema(model: type[BaseModel]) -> dict[str, Any]:
+    """``openapi_extra`` documenting a body that a route decodes itself (fast paths)."""
+    EXTRA_SCHEMAS.append(model)
+    ref = {"$ref": f"#/components/schemas/{model.__name__}"}
+    return {"requestBody": {"required": True, "content": {"application/json": {"schema": ref}}}}
+
+
+#: Request models of routes that decode their own bodies; added to the OpenAPI components.
+EXTRA_SCHEMAS: list[type[BaseModel]] = []

@@ -43,6 +43,10 @@ _TITLES = {
 }
 
 
+class MalformedBodyError(Exception):
+    """The request body is not JSON (HTTP 400); raised by routes that decode their own."""
+
+
 class FieldError(BaseModel):
     """One validation failure."""
 
@@ -122,6 +126,12 @@ def install(app: FastAPI) -> None:
             field=exc.field,
             instance=request.url.path,
             suggestions=getattr(exc, "suggestions", None),
+        )
+
+    @app.exception_handler(MalformedBodyError)
+    async def _malformed(request: Request, exc: MalformedBodyError) -> Response:
+        return problem(
+            400, str(exc), kind="malformed-json", field="body", instance=request.url.path
         )
 
     @app.exception_handler(RequestValidationError)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Annotated
 
 import numpy as np
-from fastapi import APIRouter, Depends
+from fastapi import APIRouter, Depends, Request
 from pydantic import BaseModel, Field
 
 from app.api.common import (
@@ -16,13 +16,19 @@ from app.api.common import (
     RobotId,
     Schema,
     app_settings,
+    body_schema,
+    finite_matrix,
     load_robot,
+    offload,
+    parse_json,
     pose_json,
     registry,
+    validate_body,
 )
 from app.api.errors import ERROR_RESPONSES
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
+from app.kinematics.models import RobotModel
 from app.registry import Registry
 from app.settings import Settings
 
@@ -101,30 +107,59 @@ async def compute_fk(
     operation_id="compute_fk_batch",
     response_model=FKBatchResponse,
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+    openapi_extra=body_schema(FKBatchRequest),
 )
-def compute_fk_batch(
+async def compute_fk_batch(
     robot_id: RobotId,
-    body: FKBatchRequest,
+    request: Request,
     reg: Annotated[Registry, Depends(registry)],
     settings: Annotated[Settings, Depends(app_settings)],
 ) -> ORJSONResponse:
-    """Position and orientation of one frame for many configurations (thread pool)."""
-    robot = reg.get(robot_id)
-    limit = settings.max_batch
-    n = len(body.configurations)
-    if n > limit:
-        raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
-    if n == 0:
-        raise InvalidInputError("give at least one configuration", "configurations")
-    for i, row in enumerate(body.configurations):
-        if len(row) != robot.n:
-            raise InvalidInputError(
-                f"expected {robot.n} values (one per joint), got {len(row)}",
-                f"configurations.{i}",
-            )
-    frame = body.frame or robot.ee_frame
-    qs = np.array(body.configurations, dtype=float)
-    positions, quats = forward_kinematics_batch(robot, qs, frame)
+    """Position and orientation of one frame for many configurations.
+
+    The body (up to ``DENAVIT_MAX_BATCH`` configurations) is decoded and computed in the
+    work pool: decoding takes orjson and one NumPy conversion, and FK of serial chains is
+    vectorised (see ``app.kinematics.fk.BatchChain``).
+    """
+    robot = await load_robot(reg, robot_id)
+    raw = await request.body()
+    frame, positions, quats = await offload(_fk_batch, robot, raw, settings.max_batch)
     return ORJSONResponse(
         {"robot_id": robot.id, "frame": frame, "positions": positions, "orientations": quats}
     )
+
+
+def _fk_batch(robot: RobotModel, raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray]:
+    obj = parse_json(raw)
+    qs = None
+    frame = None
+    # Fast path: exactly the expected shape, numbers only (no true/false, which NumPy would
+    # turn into 1/0). Anything else gets full validation, which names the bad element.
+    if (
+        isinstance(obj, dict)
+        and obj.keys() <= {"configurations", "frame"}
+        and isinstance(obj.get("frame"), str | None)
+        and b"true" not in raw
+        and b"false" not in raw
+    ):
+        qs = finite_matrix(obj.get("configurations"), robot.n)
+        frame = obj.get("frame")
+    if qs is None:
+        body = validate_body(FKBatchRequest, obj)
+        frame = body.frame
+        for i, row in enumerate(body.configurations):
+            if len(row) != robot.n:
+                raise InvalidInputError(
+                    f"expected {robot.n} values (one per joint), got {len(row)}",
+                    f"configurations.{i}",
+                )
+        if not body.configurations:
+            raise InvalidInputError("give at least one configuration", "configurations")
+        qs = np.array(body.configurations, dtype=float)
+    if qs.shape[0] > limit:
+        raise InvalidInputError(
+            f"{qs.shape[0]} configurations exceed the limit of {limit}", "configurations"
+        )
+    frame = frame or robot.ee_frame
+    positions, quats = forward_kinematics_batch(robot, qs, frame)
+    return frame, positions, quats

@@ -202,3 +202,25 @@ def test_oversize_and_empty_batch(client, app) -> None:
     assert client.post("/robots/ur5/fk/batch", json={"configurations": [[0] * 6] * 10}).is_success
     problem(client.post("/robots/ur5/fk/batch", json={"configurations": []}), 422, "configurations")
     problem(client.post("/robots/ur5/fk/batch", json={"configurations": [0] * 6}), 422)
+
+
+@pytest.mark.parametrize(
+    ("raw", "field"),
+    [
+        ('{"configurations": [[0, 0, 0, 0, 0, 0], [0, true, 0, 0, 0, 0]]}', "configurations.1.1"),
+        ('{"configurations": [[0, 0, 0, 0, 0, "1"]]}', "configurations.0.5"),
+        ('{"configurations": [[0, 0, 0, 0, 0, null]]}', "configurations.0.5"),
+        ('{"configurations": [[0, 0, 0, 0, 0, [0]]]}', "configurations.0.5"),
+        ('{"configurations": [[0, 0, 0, 0, 0, 0]], "frame": 3}', "frame"),
+        ('{"configurations": [[0, 0, 0, 0, 0, 0]], "extra": 1}', "extra"),
+        ('{"configurations": [[0, 0, 0, 0, 0, 1e999]]}', "configurations.0.5"),
+        ('{"frame": "tool0"}', "configurations"),
+    ],
+)
+def test_batch_bad_elements_named(client, raw: str, field: str) -> None:
+    problem(post_raw(client, "/robots/ur5/fk/batch", raw), 422, field)
+
+
+def test_batch_malformed_and_unknown_robot(client) -> None:
+    problem(post_raw(client, "/robots/ur5/fk/batch", '{"configurations": [[0, 0'), 400, "body")
+    problem(post_raw(client, "/robots/nope/fk/batch", '{"configurations": [[0]]}'), 404)

@@ -90,3 +90,40 @@ def test_quaternion_convention_against_pinocchio() -> None:
         np.testing.assert_allclose(q, ref, atol=1e-12)
         x, y, z, w = q
         np.testing.assert_allclose(pin.Quaternion(w, x, y, z).matrix(), R, atol=1e-12)
+
+
+@pytest.mark.parametrize("robot_id", CATALOG)
+def test_vectorised_batch_equals_pinocchio(registry, robot_id: str) -> None:
+    """BatchChain (NumPy) agrees with Pinocchio's FK on every link of every catalog robot."""
+    robot = registry.get(robot_id)
+    qs = random_configurations(robot, 25, seed=9)
+    for frame in [f.name for f in robot.frames if f.kind == "link"]:
+        pos, quat = forward_kinematics_batch(robot, qs, frame)
+        for i in (0, 12, 24):
+            T = forward_kinematics(robot, qs[i], [frame])[frame]
+            np.testing.assert_allclose(pos[i], T[:3, 3], atol=1e-12, err_msg=frame)
+            np.testing.assert_allclose(
+                _qm(quat[i]),
+                T[:3, :3],
+                atol=1e-12,
+            )
+
+
+def test_vectorised_batch_prismatic_and_continuous() -> None:
+    from tests.kinematics.chains import rrp_like
+
+    for robot, frame in [
+        (RobotModel("rrp", rrp_like(), ee_frame="tip"), "tip"),
+        (RobotModel("c", continuous_arm()), "l2"),
+    ]:
+        qs = random_configurations(robot, 40, seed=2)
+        pos, quat = forward_kinematics_batch(robot, qs, frame)
+        for i, q in enumerate(qs):
+            T = forward_kinematics(robot, q, [frame])[frame]
+            np.testing.assert_allclose(pos[i], T[:3, 3], atol=1e-12)
+            np.testing.assert_allclose(_qm(quat[i]), T[:3, :3], atol=1e-12)
+
+
+def _qm(q: np.ndarray) -> np.ndarray:
+    x, y, z, w = q
+    return pin.Quaternion(w, x, y, z).matrix()
