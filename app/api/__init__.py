@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from app.api import fk, health, jacobian, robots
+from app.api import analysis, fk, health, jacobian, robots
 
 #: Routers mounted by :func:`app.main.create_app`, in documentation order.
-ROUTERS = [health.router, robots.router, fk.router, jacobian.router]
+ROUTERS = [health.router, robots.router, fk.router, jacobian.router, analysis.router]
