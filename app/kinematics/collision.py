@@ -1,0 +1,532 @@
+"""Collision checking: self-collision and collision with obstacles, through Pinocchio and coal.
+
+Collision model
+---------------
+The robot's collision geometry is the URDF's ``<collision>`` elements, loaded by
+``pin.buildGeomFromUrdfString(model, urdf, pin.COLLISION, package_dirs)`` into a
+``pin.GeometryModel``: meshes become coal ``BVHModelOBBRSS`` objects, URDF primitives coal
+``Box``/``Sphere``/``Cylinder`` shapes (the capsules of DH robots are a cylinder plus a
+sphere at each end). Each geometry is attached to a *link* (the URDF link whose
+``<collision>`` it is, a Pinocchio frame) and moves with that link's Pinocchio joint.
+
+Two geometry modes:
+
+``mesh`` (default)
+    The meshes as given: exact, and the slowest. Distances between two meshes are unsigned:
+    coal reports 0 for penetrating meshes.
+``convex``
+    Each mesh is replaced by its convex hull (coal ``BVHModel.buildConvexRepresentation``,
+    qhull), checked with GJK/EPA: several times faster, conservative (a hull contains its
+    mesh, so it can report collisions the mesh does not have), and distances are signed
+    (negative = penetration depth). Primitives are unchanged.
+
+Checked pairs
+-------------
+Pairs are decided per link pair (every geometry pair of two links is checked, and the pair
+is reported once, with the smallest distance). Starting from all pairs of links that have
+collision geometry, the model removes
+
+1. links attached to the same Pinocchio joint (links joined by fixed joints): they can never
+   move relative to each other;
+2. *adjacent* links: links whose joints are joined by one joint in the kinematic tree. A
+   joint whose bodies carry no geometry is bridged, as MoveIt does (two links separated
+   only by geometry-less bodies touch at a joint, e.g. the spherical wrist of a DH arm);
+3. the pairs the robot's SRDF disables (``<disable_collisions link1 link2>``; a
+   ``<disable_default_collisions link>`` removes every pair of that link unless an
+   ``<enable_collisions>`` restores it).
+
+Obstacles are checked against every link that moves with the configuration. Links fixed to
+the world (the base) are not checked against obstacles: both are static, so their contact
+does not depend on the configuration (a table the base stands on would otherwise make
+every configuration "in collision").
+
+Margins and distances
+---------------------
+A pair is *in collision* when its distance is below ``margin`` (m; 0 = touching or
+penetrating; coal's ``security_margin``). With ``distances`` every checked pair's distance
+and witness points (the closest points, root frame) are computed; otherwise only the pairs
+in collision are reported (with their distance).
+
+Threads
+-------
+The Pinocchio/coal models are immutable once built and cached per robot
+(``RobotModel.lazy``); the scratch space (``pin.Data``, ``pin.GeometryData``) is per thread.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import OrderedDict
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import coal
+import numpy as np
+import pinocchio as pin
+from defusedxml import ElementTree
+
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.models import RobotModel
+from app.kinematics.obstacles import Obstacle
+
+GEOMETRY_MODES = ("mesh", "convex")
+#: Combined robot + obstacle models kept per robot and geometry mode (least recently used
+#: dropped first).
+MAX_CACHED_SCENES = 32
+
+LinkPair = tuple[str, str]
+
+
+# ----------------------------------------------------------------------------- pair rules
+def srdf_disabled_pairs(srdf_text: str | None, links: Iterable[str]) -> set[frozenset[str]]:
+    """Link pairs an SRDF disables (``disable_collisions`` and ``disable_default_collisions``).
+
+    Parameters
+    ----------
+    srdf_text
+        The SRDF document (parsed with defusedxml), or ``None``.
+    links
+        The links with collision geometry (used to expand ``disable_default_collisions``).
+    """
+    if not srdf_text:
+        return set()
+    root = ElementTree.fromstring(srdf_text)
+    links = list(links)
+    disabled: set[frozenset[str]] = set()
+    for el in root.iter("disable_default_collisions"):
+        link = el.get("link")
+        if link:
+            disabled.update(frozenset((link, other)) for other in links if other != link)
+    for el in root.iter("enable_collisions"):
+        a, b = el.get("link1"), el.get("link2")
+        if a and b:
+            disabled.discard(frozenset((a, b)))
+    for el in root.iter("disable_collisions"):
+        a, b = el.get("link1"), el.get("link2")
+        if a and b and a != b:
+            disabled.add(frozenset((a, b)))
+    return disabled
+
+
+def _adjacent_bodies(model: pin.Model, with_geometry: set[int]) -> set[frozenset[int]]:
+    """Joint pairs (bodies) adjacent in the kinematic tree, bridging geometry-less bodies.
+
+    Two bodies with geometry are adjacent when the tree path between them has no interior
+    body with geometry (usually: one is the other's parent joint).
+    """
+    neighbours: dict[int, set[int]] = {j: set() for j in range(model.njoints)}
+    for j in range(1, model.njoints):
+        p = int(model.parents[j])
+        neighbours[j].add(p)
+        neighbours[p].add(j)
+    adjacent: set[frozenset[int]] = set()
+    for start in with_geometry:
+        seen = {start}
+        stack = list(neighbours[start])
+        while stack:
+            j = stack.pop()
+            if j in seen:
+                continue
+            seen.add(j)
+            if j in with_geometry:
+                adjacent.add(frozenset((start, j)))
+            else:
+                stack.extend(neighbours[j])
+    return adjacent
+
+
+def checked_link_pairs(robot: RobotModel, link_joints: dict[str, int]) -> list[LinkPair]:
+    """The self-collision link pairs to check (see module docs for the rules).
+
+    Parameters
+    ----------
+    robot
+        The robot (its kinematic tree and SRDF).
+    link_joints
+        Link with collision geometry → Pinocchio joint id that moves it.
+
+    Returns
+    -------
+    list of (str, str)
+        Pairs ``(a, b)`` ordered by the links' frame ids (a before b).
+    """
+    order = {name: robot.model.getFrameId(name) for name in link_joints}
+    links = sorted(link_joints, key=lambda name: (order[name], name))
+    bodies = set(link_joints.values())
+    adjacent = _adjacent_bodies(robot.model, bodies)
+    disabled = srdf_disabled_pairs(robot.srdf_text, links)
+    pairs: list[LinkPair] = []
+    for i, a in enumerate(links):
+        for b in links[i + 1 :]:
+            ja, jb = link_joints[a], link_joints[b]
+            if ja == jb or frozenset((ja, jb)) in adjacent:
+                continue
+            if frozenset((a, b)) in disabled:
+                continue
+            pairs.append((a, b))
+    return pairs
+
+
+def _urdf_collision_links(robot: RobotModel) -> dict[str, int]:
+    """Links with ``<collision>`` elements → their joint, from the URDF text alone."""
+    root = ElementTree.fromstring(robot.urdf_text)
+    out: dict[str, int] = {}
+    for link in root.iter("link"):
+        name = link.get("name")
+        if name and link.find("collision") is not None:
+            out[name] = int(robot.model.frames[robot.frame_id(name)].parentJoint)
+    return out
+
+
+def collision_link_pairs(robot: RobotModel) -> list[LinkPair]:
+    """The checked self-collision link pairs, computed cheaply (no mesh is loaded).
+
+    Same rules and result as :attr:`CollisionModel.link_pairs`, derived from the URDF's
+    ``<collision>`` elements; cached per robot.
+    """
+    return robot.lazy(
+        "collision.link_pairs", lambda r: checked_link_pairs(r, _urdf_collision_links(r))
+    )
+
+
+# ------------------------------------------------------------------------------- results
+@dataclass(slots=True)
+class PairReport:
+    """One checked pair.
+
+    ``a`` is a link; ``b`` a link (``kind == "self"``) or an obstacle name
+    (``kind == "environment"``). ``distance`` is in metres (signed where coal gives a
+    penetration depth, see module docs); ``point_a``/``point_b`` are the witness points on
+    ``a`` and ``b`` in the root frame, present when distances were asked.
+    """
+
+    a: str
+    b: str
+    kind: str
+    in_collision: bool
+    distance: float
+    point_a: np.ndarray | None = None
+    point_b: np.ndarray | None = None
+
+
+@dataclass(slots=True)
+class CollisionReport:
+    """Verdict for one configuration."""
+
+    in_collision: bool
+    self_collision: bool
+    environment_collision: bool
+    min_distance: float | None
+    pairs: list[PairReport] = field(default_factory=list)
+    checked_pairs: int = 0
+
+
+# ------------------------------------------------------------------------------- models
+class _Scratch:
+    """Per-thread scratch for one compiled model: Data, GeometryData, current margin."""
+
+    __slots__ = ("data", "geom_data", "margin")
+
+    def __init__(self, model: pin.Model, gm: pin.GeometryModel) -> None:
+        self.data = model.createData()
+        self.geom_data = pin.GeometryData(gm)
+        self.margin = 0.0
+
+
+class _Compiled:
+    """A GeometryModel (robot geometry + obstacles) with its pairs, ready to check.
+
+    Geometry pair ``k`` belongs to reported pair ``pair_names[k]`` (``swap[k]`` when the
+    geometry order is reversed with respect to ``(a, b)``); pairs ``k < n_self`` are
+    self-collision pairs, the rest environment pairs.
+    """
+
+    def __init__(
+        self,
+        robot: RobotModel,
+        base: pin.GeometryModel,
+        geom_links: list[str],
+        link_pairs: Sequence[LinkPair],
+        obstacles: Sequence[Obstacle],
+    ) -> None:
+        self.robot = robot
+        gm = base.copy()
+        gm.removeAllCollisionPairs()
+        names: list[LinkPair] = []
+        swap: list[bool] = []
+        by_link: dict[str, list[int]] = {}
+        for g, link in enumerate(geom_links):
+            by_link.setdefault(link, []).append(g)
+        for a, b in link_pairs:
+            for ga in by_link[a]:
+                for gb in by_link[b]:
+                    gm.addCollisionPair(pin.CollisionPair(ga, gb))
+                    names.append((a, b))
+                    swap.append(ga > gb)  # CollisionPair stores (min, max)
+        self.n_self = len(names)
+        movable = [g for g, go in enumerate(base.geometryObjects) if go.parentJoint != 0]
+        for i, obstacle in enumerate(obstacles):
+            go = pin.GeometryObject(
+                f"obstacle/{i}", 0, 0, obstacle.placement(), obstacle.geometry()
+            )
+            gid = gm.addGeometryObject(go)
+            for g in movable:
+                gm.addCollisionPair(pin.CollisionPair(g, gid))
+                names.append((geom_links[g], obstacle.name))
+                swap.append(False)
+        self.gm = gm
+        self.checked_pairs = len(set(names))
+        self.pair_names = names
+        self.swap = swap
+        self.npairs = len(names)
+        self._local = threading.local()
+
+    def scratch(self, margin: float) -> _Scratch:
+        """This thread's scratch, its collision requests set to ``margin``."""
+        s = getattr(self._local, "s", None)
+        if s is None:
+            s = self._local.s = _Scratch(self.robot.model, self.gm)
+        if s.margin != margin:
+            for req in s.geom_data.collisionRequests:
+                req.security_margin = margin
+            s.margin = margin
+        return s
+
+
+class CollisionModel:
+    """A robot's collision model in one geometry mode, with a cache of obstacle sets.
+
+    Build it with :func:`collision_model` (cached per robot and mode).
+
+    Attributes
+    ----------
+    geometry : pin.GeometryModel
+        The robot geometry (no pairs).
+    geom_links : list of str
+        Link of each geometry.
+    link_pairs : list of (str, str)
+        Checked self-collision link pairs.
+    moving_links : list of str
+        Links checked against obstacles (those not fixed to the world).
+    """
+
+    def __init__(self, robot: RobotModel, mode: str = "mesh") -> None:
+        if mode not in GEOMETRY_MODES:
+            raise InvalidInputError(
+                f"unknown geometry mode {mode!r}; expected one of {', '.join(GEOMETRY_MODES)}",
+                "geometry",
+            )
+        self.robot = robot
+        self.mode = mode
+        gm = pin.buildGeomFromUrdfString(
+            robot.model, robot.urdf_text, pin.COLLISION, package_dirs=robot.package_dirs
+        )
+        if mode == "convex":
+            for go in gm.geometryObjects:
+                if isinstance(go.geometry, coal.BVHModelBase):
+                    go.geometry.buildConvexRepresentation(False)
+                    go.geometry = go.geometry.convex
+        self.geometry = gm
+        self.geom_links = [robot.model.frames[go.parentFrame].name for go in gm.geometryObjects]
+        link_joints = {
+            link: int(go.parentJoint)
+            for link, go in zip(self.geom_links, gm.geometryObjects, strict=True)
+        }
+        self.link_pairs = checked_link_pairs(robot, link_joints)
+        self.moving_links = [link for link, j in link_joints.items() if j != 0]
+        self._base = _Compiled(robot, gm, self.geom_links, self.link_pairs, ())
+        self._scenes: OrderedDict[tuple[Obstacle, ...], _Compiled] = OrderedDict()
+        self._lock = threading.Lock()
+
+    # ------------------------------------------------------------------ compiled variants
+    def compiled(self, obstacles: Sequence[Obstacle] = ()) -> _Compiled:
+        """The model with ``obstacles`` added (cached, least recently used dropped)."""
+        if not obstacles:
+            return self._base
+        key = tuple(obstacles)
+        with self._lock:
+            comp = self._scenes.get(key)
+            if comp is not None:
+                self._scenes.move_to_end(key)
+                return comp
+        comp = _Compiled(self.robot, self.geometry, self.geom_links, self.link_pairs, key)
+        with self._lock:
+            self._scenes[key] = comp
+            while len(self._scenes) > MAX_CACHED_SCENES:
+                self._scenes.popitem(last=False)
+        return comp
+
+    # ------------------------------------------------------------------------- checks
+    def collides(
+        self, q: np.ndarray, obstacles: Sequence[Obstacle] = (), margin: float = 0.0
+    ) -> bool:
+        """Whether wire configuration ``q`` is in (self or environment) collision.
+
+        The fastest check: stops at the first pair closer than ``margin``.
+        """
+        comp = self.compiled(obstacles)
+        s = comp.scratch(margin)
+        return bool(
+            pin.computeCollisions(
+                self.robot.model, s.data, comp.gm, s.geom_data, self.robot.to_pin(q), True
+            )
+        )
+
+    def check(
+        self,
+        q: np.ndarray,
+        obstacles: Sequence[Obstacle] = (),
+        *,
+        margin: float = 0.0,
+        distances: bool = False,
+        pair_distances: bool = True,
+    ) -> CollisionReport:
+        """Check wire configuration ``q`` against itself and ``obstacles``.
+
+        Parameters
+        ----------
+        q
+            Wire configuration (n,), rad / m.
+        obstacles
+            Obstacles in the root frame.
+        margin
+            Pairs closer than this (m) count as in collision (≥ 0).
+        distances
+            Compute every checked pair's distance and witness points; ``min_distance`` is
+            then the smallest over all checked pairs.
+        pair_distances
+            Without ``distances``: also compute the distance of the pairs in collision
+            (one coal distance query per such pair). Batches turn it off.
+
+        Returns
+        -------
+        CollisionReport
+            Pairs are sorted by distance (closest first) when distances are known.
+        """
+        comp = self.compiled(obstacles)
+        s = comp.scratch(margin)
+        model, gm, gd = self.robot.model, comp.gm, s.geom_data
+        qp = self.robot.to_pin(q)
+        if distances:
+            pin.computeDistances(model, s.data, gm, gd, qp)
+            hit = pin.computeCollisions(gm, gd, False)
+        else:
+            hit = pin.computeCollisions(model, s.data, gm, gd, qp, False)
+            if not hit:
+                return CollisionReport(False, False, False, None, [], comp.checked_pairs)
+        results = gd.collisionResults
+        colliding = [k for k in range(comp.npairs) if results[k].isCollision()] if hit else []
+        if distances:
+            wanted = range(comp.npairs)
+        else:
+            wanted = colliding
+        best: dict[tuple[str, str, str], PairReport] = {}
+        hit_set = set(colliding)
+        for k in wanted:
+            a, b = comp.pair_names[k]
+            kind = "self" if k < comp.n_self else "environment"
+            dist = np.nan
+            pa = pb = None
+            if distances:
+                dr = gd.distanceResults[k]
+                dist = float(dr.min_distance)
+                pa, pb = np.array(dr.getNearestPoint1()), np.array(dr.getNearestPoint2())
+                if comp.swap[k]:
+                    pa, pb = pb, pa
+            elif pair_distances:
+                dist = float(pin.computeDistance(gm, gd, k).min_distance)
+            key = (a, b, kind)
+            prev = best.get(key)
+            coll = k in hit_set
+            if prev is None:
+                best[key] = PairReport(a, b, kind, coll, dist, pa, pb)
+            else:
+                prev.in_collision = prev.in_collision or coll
+                if dist < prev.distance:
+                    prev.distance, prev.point_a, prev.point_b = dist, pa, pb
+        pairs = list(best.values())
+        known = [p.distance for p in pairs if not np.isnan(p.distance)]
+        if known:
+            pairs.sort(key=lambda p: p.distance)
+        self_hit = any(p.in_collision and p.kind == "self" for p in pairs)
+        env_hit = any(p.in_collision and p.kind == "environment" for p in pairs)
+        return CollisionReport(
+            in_collision=self_hit or env_hit,
+            self_collision=self_hit,
+            environment_collision=env_hit,
+            min_distance=min(known) if known else None,
+            pairs=pairs,
+            checked_pairs=comp.checked_pairs,
+        )
+
+    def check_batch(
+        self,
+        qs: np.ndarray,
+        obstacles: Sequence[Obstacle] = (),
+        *,
+        margin: float = 0.0,
+        distances: bool = False,
+    ) -> list[CollisionReport]:
+        """:meth:`check` for each row of ``qs`` (N, n); no per-pair distances unless asked."""
+        return [
+            self.check(q, obstacles, margin=margin, distances=distances, pair_distances=False)
+            for q in qs
+        ]
+
+
+def collision_model(robot: RobotModel, mode: str = "mesh") -> CollisionModel:
+    """The robot's collision model in ``mode`` (built once per robot, then cached)."""
+    if mode not in GEOMETRY_MODES:
+        raise InvalidInputError(
+            f"unknown geometry mode {mode!r}; expected one of {', '.join(GEOMETRY_MODES)}",
+            "geometry",
+        )
+    return robot.lazy(f"collision.{mode}", lambda r: CollisionModel(r, mode))
+
+
+def collision_filter(
+    robot: RobotModel,
+    obstacles: Sequence[Obstacle] = (),
+    *,
+    margin: float = 0.0,
+    mode: str = "mesh",
+) -> Callable[[np.ndarray], bool]:
+    """An ``accept(q)`` predicate for IK: true when wire configuration ``q`` is collision-free.
+
+    Self-collision and collision with ``obstacles`` (closer than ``margin`` counts) are
+    rejected. The model is built (and its obstacle variant compiled) here, not on first call.
+    """
+    cm = collision_model(robot, mode)
+    comp_obstacles = tuple(obstacles)
+    cm.compiled(comp_obstacles)
+
+    def accept(q: np.ndarray) -> bool:
+        return not cm.collides(np.asarray(q, dtype=float), comp_obstacles, margin)
+
+    return accept
+
+
+def report_json(report: CollisionReport, *, witness: bool) -> dict[str, Any]:
+    """Wire form of a :class:`CollisionReport` (single-configuration response body part)."""
+    pairs = []
+    for p in report.pairs:
+        item: dict[str, Any] = {
+            "a": p.a,
+            "b": p.b,
+            "kind": p.kind,
+            "in_collision": p.in_collision,
+            "distance": None if np.isnan(p.distance) else p.distance,
+        }
+        if witness and p.point_a is not None:
+            item["point_a"] = p.point_a.tolist()
+            item["point_b"] = p.point_b.tolist()
+        pairs.append(item)
+    return {
+        "in_collision": report.in_collision,
+        "self_collision": report.self_collision,
+        "environment_collision": report.environment_collision,
+        "min_distance": report.min_distance,
+        "pairs": pairs,
+        "checked_pairs": report.checked_pairs,
+    }
