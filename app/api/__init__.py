@@ -2,7 +2,15 @@
 
 from __future__ import annotations
 
-from app.api import analysis, fk, health, jacobian, robots
+from app.api import analysis, collisions, fk, health, jacobian, robots, scenes
 
 #: Routers mounted by :func:`app.main.create_app`, in documentation order.
-ROUTERS = [health.router, robots.router, fk.router, jacobian.router, analysis.router]
+ROUTERS = [
+    health.router,
+    robots.router,
+    fk.router,
+    jacobian.router,
+    analysis.router,
+    collisions.router,
+    scenes.router,
+]

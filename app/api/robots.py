@@ -9,6 +9,7 @@ from pydantic import BaseModel, Field
 
 from app.api.common import ORJSONResponse, RobotId, registry
 from app.api.errors import ERROR_RESPONSES
+from app.kinematics.collision import collision_link_pairs
 from app.registry import Registry
 
 router = APIRouter(prefix="/robots", tags=["robots"])
@@ -71,6 +72,10 @@ class RobotDetail(BaseModel):
     end_effector: str = Field(description="Default frame of fk, jacobian and ik.")
     neutral: list[float] = Field(description="Neutral configuration (0, clipped to limits).")
     has_collision_geometry: bool = Field(description="Whether the URDF has <collision>.")
+    collision_pairs: list[list[str]] = Field(
+        description="Self-collision link pairs [a, b] that collision checks test (same-body, "
+        "adjacent and SRDF-disabled pairs removed)."
+    )
 
 
 @router.get("", operation_id="list_robots", response_model=RobotList)
@@ -118,5 +123,6 @@ def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) ->
             "end_effector": robot.ee_frame,
             "neutral": robot.neutral().tolist(),
             "has_collision_geometry": robot.has_collision_geometry,
+            "collision_pairs": [list(p) for p in collision_link_pairs(robot)],
         }
     )

@@ -168,8 +168,11 @@ def checked_link_pairs(robot: RobotModel, link_joints: dict[str, int]) -> list[L
     return pairs
 
 
-def _urdf_collision_links(robot: RobotModel) -> dict[str, int]:
-    """Links with ``<collision>`` elements → their joint, from the URDF text alone."""
+def collision_links(robot: RobotModel) -> dict[str, int]:
+    """Links with ``<collision>`` elements → the Pinocchio joint moving them (URDF order).
+
+    Read from the URDF text alone (no mesh is loaded).
+    """
     root = ElementTree.fromstring(robot.urdf_text)
     out: dict[str, int] = {}
     for link in root.iter("link"):
@@ -185,9 +188,7 @@ def collision_link_pairs(robot: RobotModel) -> list[LinkPair]:
     Same rules and result as :attr:`CollisionModel.link_pairs`, derived from the URDF's
     ``<collision>`` elements; cached per robot.
     """
-    return robot.lazy(
-        "collision.link_pairs", lambda r: checked_link_pairs(r, _urdf_collision_links(r))
-    )
+    return robot.lazy("collision.link_pairs", lambda r: checked_link_pairs(r, collision_links(r)))
 
 
 # ------------------------------------------------------------------------------- results
