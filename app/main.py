@@ -25,7 +25,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     settings = settings or get_settings()
     app = FastAPI(title="Denavit", version="0.1.0", description=DESCRIPTION)
     app.state.settings = settings
-    app.state.registry = Registry()
+    app.state.registry = Registry(settings.data_dir)
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)

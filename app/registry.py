@@ -1,4 +1,4 @@
-"""Where robots come from: the built-in catalog and the robots users add.
+"""Where robots come from: the built-in catalog, the built-in DH tables, the robots users add.
 
 The registry knows every robot id without parsing any URDF (start-up stays fast); a robot's
 model is built on first use and cached. Sources:
@@ -6,21 +6,79 @@ model is built on first use and cached. Sources:
 - ``example-robot-data``: the entries of ``robots/example_robot_data.yaml``; files are located
   through the installed package's metadata (6.x ships no Python loader), and the package's
   ``share`` directory is given to Pinocchio so ``package://`` mesh URIs resolve.
+- ``dh`` (built in): the tables of ``robots/dh/*.yaml``, turned into URDF by :mod:`dh2urdf`
+  on first use; the default end effector is the ``tool`` frame.
+- ``dh`` and ``upload`` (user-added): robots imported from a DH table or uploaded as URDF,
+  kept in the data directory by :class:`app.store.RobotStore`.
+
+Several processes may serve the same data directory: the directory is the source of truth.
+Before a cached user-added robot is served, :meth:`RobotStore.token` (one ``stat`` and one
+small read) tells whether any process changed the set of robots since the last look; if
+so, the directory is listed again and models whose revision changed are dropped. Built-in
+robots never change and need no check.
 """
 
 from __future__ import annotations
 
 import importlib.metadata
+import logging
+import math
 import threading
+from collections.abc import Iterable
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from pathlib import Path
+from typing import Any, Literal
+from urllib.parse import urlsplit
+from xml.etree.ElementTree import Element, ParseError
 
 import yaml
+from defusedxml import DefusedXmlException
+from defusedxml import ElementTree as SafeET
 
 import robots
-from app.kinematics.errors import UnknownNameError
+from app.kinematics.errors import (
+    ConflictError,
+    ForbiddenError,
+    InvalidInputError,
+    UnknownNameError,
+)
 from app.kinematics.models import RobotModel, RobotSummary
+from app.store import (
+    SRDF_FILE,
+    TABLE_FILE,
+    URDF_FILE,
+    RobotStore,
+    StoredRobot,
+    check_robot_id,
+)
+from dh2urdf import DHError, DHTable, to_urdf
+
+log = logging.getLogger("denavit.registry")
+
+#: Default end effector of every DH robot (the TCP frame dh2urdf generates).
+DH_EE_FRAME = "tool"
+#: Most rows a user-supplied DH table may have.
+MAX_DH_JOINTS = 64
+#: Most joints (of any type) a user-supplied URDF may have.
+MAX_URDF_JOINTS = 512
+#: Joint types a URDF upload may use (the wire has one value per actuated joint).
+URDF_JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed")
+_NUMERIC_ATTRIBUTES = {
+    "origin": ("xyz", "rpy"),
+    "axis": ("xyz",),
+    "limit": ("lower", "upper", "effort", "velocity"),
+    "mimic": ("multiplier", "offset"),
+    "mass": ("value",),
+    "inertia": ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"),
+    "box": ("size",),
+    "cylinder": ("radius", "length"),
+    "sphere": ("radius",),
+    "capsule": ("radius", "length"),
+    "mesh": ("scale",),
+    "dynamics": ("damping", "friction"),
+    "safety_controller": ("soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"),
+}
 
 
 @lru_cache
@@ -79,43 +137,596 @@ def load_catalog(path: Path = robots.CATALOG_FILE) -> dict[str, CatalogEntry]:
     return {e["id"]: CatalogEntry(**e) for e in doc["robots"]}
 
 
+class DHEntry:
+    """One built-in DH robot (``robots/dh/<id>.yaml``).
+
+    The summary reads the YAML only (number of rows, description); the table is validated
+    and converted to URDF when the model is first needed.
+    """
+
+    def __init__(self, robot_id: str, path: Path) -> None:
+        self.id = robot_id
+        self.path = path
+
+    @cached_property
+    def _doc(self) -> dict[str, Any]:
+        doc = yaml.safe_load(self.path.read_text(encoding="utf-8"))
+        return doc if isinstance(doc, dict) else {}
+
+    def summary(self) -> RobotSummary:
+        joints = self._doc.get("joints")
+        return RobotSummary(
+            self.id,
+            self.id,
+            "dh",
+            len(joints) if isinstance(joints, list) else 0,
+            str(self._doc.get("description") or ""),
+        )
+
+    @cached_property
+    def table(self) -> DHTable:
+        return DHTable.from_file(self.path)
+
+    def build(self) -> RobotModel:
+        table = self.table
+        return RobotModel(
+            self.id,
+            to_urdf(table),
+            name=self.id,
+            source="dh",
+            ee_frame=DH_EE_FRAME,
+            description=table.description,
+        )
+
+
+def load_dh_builtins(exclude: Iterable[str] = ()) -> dict[str, DHEntry]:
+    """The built-in DH robots by id (file stem), skipping ids in ``exclude``."""
+    taken = set(exclude)
+    return {rid: DHEntry(rid, path) for rid, path in robots.dh_tables().items() if rid not in taken}
+
+
+# ---------------------------------------------------------------------- DH documents
+def dh_field(path: str | None, prefix: str = "") -> str:
+    """A dh2urdf field path (``joints[2].lower``) in the API's dotted form (``joints.2.lower``)."""
+    dotted = (path or "").replace("[", ".").replace("]", "").strip(".")
+    if prefix:
+        return f"{prefix}.{dotted}" if dotted else prefix
+    return dotted or "body"
+
+
+def dh_error(exc: DHError, prefix: str = "") -> InvalidInputError:
+    """The core error (HTTP 422) for a dh2urdf validation error, naming the field."""
+    return InvalidInputError(exc.reason, dh_field(exc.field, prefix))
+
+
+class MalformedDocumentError(InvalidInputError):
+    """The document is not JSON or YAML at all (the API answers 400)."""
+
+
+def _reject_yaml_aliases(text: str) -> None:
+    """Refuse YAML anchors' aliases (``*name``): they let a small body expand enormously."""
+    try:
+        for event in yaml.parse(text, Loader=yaml.SafeLoader):
+            if isinstance(event, yaml.AliasEvent):
+                line = event.start_mark.line + 1 if event.start_mark else "?"
+                raise InvalidInputError(
+                    f"YAML aliases are not accepted (alias *{event.anchor} on line {line}); "
+                    "write the values out",
+                    "body",
+                )
+    except yaml.YAMLError:
+        return  # syntax errors are reported by the table parser, with their position
+    except RecursionError:
+        raise MalformedDocumentError("invalid YAML: nested too deeply", "body") from None
+
+
+def parse_dh_document(text: str, fmt: Literal["json", "yaml"]) -> DHTable:
+    """Validate a DH table document (JSON or YAML text) and convert it to SI.
+
+    Raises
+    ------
+    MalformedDocumentError
+        The text is not JSON/YAML (or uses YAML aliases, or nests absurdly deep).
+    InvalidInputError
+        A field is wrong; ``field`` is its dotted path (``joints.2.lower``).
+    """
+    if fmt == "yaml":
+        _reject_yaml_aliases(text)
+    try:
+        table = DHTable.from_text(text, fmt)
+    except DHError as exc:
+        if exc.field is None and exc.reason.startswith(("invalid JSON", "invalid YAML")):
+            raise MalformedDocumentError(exc.reason, "body") from None
+        raise dh_error(exc) from None
+    except RecursionError:
+        raise MalformedDocumentError(f"invalid {fmt.upper()}: nested too deeply", "body") from None
+    if table.dof > MAX_DH_JOINTS:
+        raise InvalidInputError(f"at most {MAX_DH_JOINTS} rows, got {table.dof}", "joints")
+    return table
+
+
+def table_yaml(table: DHTable) -> bytes:
+    """The stored form of a table: its SI document (``DHTable.to_dict``) as YAML."""
+    return yaml.safe_dump(table.to_dict(), sort_keys=False, allow_unicode=True).encode()
+
+
+# ---------------------------------------------------------------------- URDF uploads
+def parse_untrusted_xml(text: str, field: str) -> Element:
+    """Parse XML from a client with defusedxml: no DTD, no entities, no external references.
+
+    Raises :class:`InvalidInputError` naming ``field`` for anything that is not plain,
+    well-formed XML.
+    """
+    if "\x00" in text:
+        raise InvalidInputError("XML must not contain NUL characters", field)
+    try:
+        return SafeET.fromstring(text, forbid_dtd=True)
+    except DefusedXmlException as exc:
+        raise InvalidInputError(
+            f"DTDs and entity declarations are not accepted ({type(exc).__name__})",
+            field,
+        ) from None
+    except ParseError as exc:
+        raise InvalidInputError(f"not well-formed XML ({exc})", field) from None
+    except (ValueError, RecursionError) as exc:
+        raise InvalidInputError(f"not well-formed XML ({exc})", field) from None
+
+
+def check_resource_uri(uri: str) -> str | None:
+    """Why a mesh/texture ``filename`` is refused, or ``None`` when it is allowed.
+
+    Allowed: ``package://<package>/<path>`` with plain segments (no ``..``, ``.``, empty
+    segments, backslashes or percent escapes); such URIs resolve inside the package
+    directories the service was given and nowhere else. Refused: absolute paths, relative
+    paths, ``file://`` and every other scheme.
+    """
+    if not uri:
+        return "empty filename"
+    if any(c in uri for c in "\\%\x00") or any(ord(c) < 32 for c in uri):
+        return "backslashes, percent escapes and control characters are not allowed"
+    parts = urlsplit(uri)
+    if parts.scheme != "package":
+        if parts.scheme:
+            return f"scheme {parts.scheme}:// is not allowed (use package://<package>/<path>)"
+        return "plain paths are not allowed (use package://<package>/<path>)"
+    if parts.query or parts.fragment or "@" in parts.netloc or ":" in parts.netloc:
+        return "package URIs take no query, fragment, user or port"
+    segments = [parts.netloc, *parts.path.split("/")[1:]]
+    if len(segments) < 2 or any(s in ("", ".", "..") for s in segments):
+        return "package URIs need a package name and a path without '..', '.' or empty segments"
+    return None
+
+
+def _check_numbers(root: Element, field: str) -> None:
+    for element in root.iter():
+        names = _NUMERIC_ATTRIBUTES.get(element.tag, ())
+        for attr in names:
+            raw = element.get(attr)
+            if raw is None:
+                continue
+            try:
+                values = [float(v) for v in raw.split()]
+            except ValueError:
+                raise InvalidInputError(
+                    f"<{element.tag} {attr}={raw[:40]!r}>: not a list of numbers", field
+                ) from None
+            if not all(math.isfinite(v) for v in values):
+                raise InvalidInputError(
+                    f"<{element.tag} {attr}={raw[:40]!r}>: numbers must be finite", field
+                )
+
+
+def check_urdf_document(root: Element, field: str = "urdf") -> None:
+    """Structural checks of an uploaded URDF, with messages that name the culprit.
+
+    Pinocchio's own parser only says "not a valid URDF model"; these checks say why: the
+    root element, link and joint names, joint types and limits, the tree structure
+    (one root, one parent per link, no cycle), finite numbers, non-zero axes, at least one
+    actuated joint, and safe mesh ``filename`` URIs (see :func:`check_resource_uri`).
+    """
+    if root.tag != "robot":
+        raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
+    for element in root.iter():
+        uri = element.get("filename")
+        if uri is not None:
+            reason = check_resource_uri(uri)
+            if reason:
+                raise InvalidInputError(
+                    f"<{element.tag} filename={uri[:80]!r}> refused: {reason}", field
+                )
+    _check_numbers(root, field)
+
+    links: set[str] = set()
+    for link in root.findall("link"):
+        name = link.get("name")
+        if not name:
+            raise InvalidInputError("a <link> has no name", field)
+        if name in links:
+            raise InvalidInputError(f"link {name!r} is defined twice", field)
+        links.add(name)
+    if not links:
+        raise InvalidInputError("the URDF has no <link>", field)
+
+    joints = root.findall("joint")
+    if len(joints) > MAX_URDF_JOINTS:
+        raise InvalidInputError(f"at most {MAX_URDF_JOINTS} joints, got {len(joints)}", field)
+    names: set[str] = set()
+    parent_of: dict[str, str] = {}
+    actuated = 0
+    for joint in joints:
+        name = joint.get("name")
+        if not name:
+            raise InvalidInputError("a <joint> has no name", field)
+        if name in names:
+            raise InvalidInputError(f"joint {name!r} is defined twice", field)
+        names.add(name)
+        jtype = joint.get("type")
+        if jtype not in URDF_JOINT_TYPES:
+            raise InvalidInputError(
+                f"joint {name!r}: type {jtype!r} is not supported "
+                f"(use {', '.join(URDF_JOINT_TYPES)})",
+                field,
+            )
+        ends = {}
+        for end in ("parent", "child"):
+            el = joint.find(end)
+            link = el.get("link") if el is not None else None
+            if not link:
+                raise InvalidInputError(f"joint {name!r} has no <{end} link=...>", field)
+            if link not in links:
+                raise InvalidInputError(
+                    f"joint {name!r}: {end} link {link!r} is not defined", field
+                )
+            ends[end] = link
+        if ends["child"] in parent_of:
+            raise InvalidInputError(
+                f"link {ends['child']!r} has two parent joints "
+                f"({parent_of[ends['child']]!r} and {name!r})",
+                field,
+            )
+        parent_of[ends["child"]] = name
+        axis = joint.find("axis")
+        if axis is not None and axis.get("xyz") is not None:
+            if all(float(v) == 0.0 for v in axis.get("xyz", "").split()):
+                raise InvalidInputError(f"joint {name!r}: the axis is the zero vector", field)
+        if jtype in ("revolute", "prismatic"):
+            limit = joint.find("limit")
+            if limit is None:
+                raise InvalidInputError(f"joint {name!r}: a {jtype} joint needs <limit>", field)
+            lower = float(limit.get("lower", 0.0))
+            upper = float(limit.get("upper", 0.0))
+            if lower > upper:
+                raise InvalidInputError(
+                    f"joint {name!r}: <limit> lower ({lower!r}) > upper ({upper!r})", field
+                )
+        if jtype != "fixed" and joint.find("mimic") is None:
+            actuated += 1
+
+    roots = sorted(links - set(parent_of))
+    if len(roots) != 1:
+        what = f"{len(roots)} root links ({', '.join(map(repr, roots[:5]))})" if roots else "none"
+        raise InvalidInputError(f"the links must form one tree with one root; found {what}", field)
+    child_of = {}
+    for joint in joints:
+        child_of.setdefault(joint.find("parent").get("link"), []).append(
+            joint.find("child").get("link")
+        )
+    seen, stack = {roots[0]}, [roots[0]]
+    while stack:
+        for child in child_of.get(stack.pop(), ()):
+            if child not in seen:
+                seen.add(child)
+                stack.append(child)
+    if len(seen) != len(links):
+        raise InvalidInputError("the joints form a cycle", field)
+    if actuated == 0:
+        raise InvalidInputError(
+            "the URDF has no actuated joint (revolute, continuous or prismatic)", field
+        )
+
+
+def check_srdf_document(text: str, links: set[str], field: str = "srdf") -> None:
+    """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs."""
+    root = parse_untrusted_xml(text, field)
+    if root.tag != "robot":
+        raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
+    for pair in root.iter("disable_collisions"):
+        for attr in ("link1", "link2"):
+            link = pair.get(attr)
+            if link not in links:
+                raise InvalidInputError(
+                    f"<disable_collisions {attr}={link!r}>: no such link in the URDF", field
+                )
+
+
+def build_checked_model(
+    robot_id: str,
+    urdf: str,
+    *,
+    source: str,
+    srdf: str | None = None,
+    ee_frame: str | None = None,
+    description: str = "",
+    package_dirs: Iterable[str] = (),
+    urdf_field: str = "urdf",
+) -> RobotModel:
+    """A :class:`RobotModel` from text a client sent; every failure is an InvalidInputError."""
+    try:
+        robot = RobotModel(
+            robot_id,
+            urdf,
+            name=robot_id,
+            source=source,
+            package_dirs=list(package_dirs),
+            srdf_text=srdf,
+            ee_frame=ee_frame,
+            description=description,
+        )
+    except UnknownNameError as exc:
+        raise InvalidInputError(exc.message, "ee_frame") from None
+    except (ValueError, RuntimeError, IndexError, KeyError, TypeError) as exc:
+        raise InvalidInputError(f"Pinocchio rejected the URDF ({exc})", urdf_field) from None
+    if robot.n == 0:
+        raise InvalidInputError(
+            "the URDF has no actuated joint (revolute, continuous or prismatic)", urdf_field
+        )
+    return robot
+
+
+# ---------------------------------------------------------------------- the registry
 class Registry:
     """Every robot the service knows, built lazily and cached.
+
+    Parameters
+    ----------
+    data_dir
+        The data directory (``DENAVIT_DATA_DIR``); user-added robots live in
+        ``<data_dir>/robots``. ``None``: built-in robots only (adding robots is refused).
+        Creating a registry cleans what a crash may have left in the robots directory.
 
     Thread-safe: models are built under a lock; a built model is immutable apart from its
     per-thread Data.
     """
 
-    def __init__(self) -> None:
+    def __init__(self, data_dir: Path | str | None = None) -> None:
         self.catalog = load_catalog()
+        self.dh_builtin = load_dh_builtins(exclude=self.catalog)
+        self.store = RobotStore(Path(data_dir) / "robots") if data_dir is not None else None
         self._cache: dict[str, RobotModel] = {}
         self._lock = threading.Lock()
+        self._user_lock = threading.Lock()
+        self._user: dict[str, StoredRobot] = {}
+        self._user_models: dict[str, tuple[str, RobotModel]] = {}
+        self._user_token: tuple[bytes, int] | None = None
+        if self.store is not None:
+            removed = self.store.recover()
+            if removed:
+                log.warning("removed %d incomplete entries from %s", removed, self.store.root)
 
+    # ------------------------------------------------------------------ user-added robots
+    def _refresh(self) -> dict[str, StoredRobot]:
+        """The user-added robots, re-listed from disk if any process changed them."""
+        if self.store is None:
+            return {}
+        if self.store.token() == self._user_token:
+            return self._user
+        with self._user_lock:
+            token = self.store.token()  # before listing: a change while listing is seen next
+            if token != self._user_token:
+                listing = self.store.list()
+                self._user_models = {
+                    rid: entry
+                    for rid, entry in self._user_models.items()
+                    if rid in listing and listing[rid].revision == entry[0]
+                }
+                self._user = listing
+                self._user_token = token
+            return self._user
+
+    # ------------------------------------------------------------------ lookups
     def ids(self) -> list[str]:
         """All robot ids."""
-        return list(self.catalog)
+        return [*self.catalog, *self.dh_builtin, *self._refresh()]
 
     def summaries(self) -> list[RobotSummary]:
         """What GET /robots lists (no URDF is parsed)."""
-        return [e.summary() for e in self.catalog.values()]
+        out = [e.summary() for e in self.catalog.values()]
+        out += [e.summary() for e in self.dh_builtin.values()]
+        for rid, stored in self._refresh().items():
+            meta = stored.meta
+            out.append(
+                RobotSummary(
+                    rid,
+                    str(meta.get("name") or rid),
+                    str(meta.get("source") or "upload"),
+                    int(meta.get("joints") or 0),
+                    str(meta.get("description") or ""),
+                )
+            )
+        return out
 
     def is_builtin(self, robot_id: str) -> bool:
-        return robot_id in self.catalog
+        return robot_id in self.catalog or robot_id in self.dh_builtin
+
+    def exists(self, robot_id: str) -> bool:
+        """Whether ``robot_id`` names a robot (built in or user-added)."""
+        return self.is_builtin(robot_id) or robot_id in self._refresh()
 
     def cached(self, robot_id: str) -> RobotModel | None:
-        """The robot's model if it is already built, else ``None`` (never blocks)."""
-        return self._cache.get(robot_id)
+        """The robot's model if it is already built and current, else ``None``.
+
+        Never blocks on a build; for a user-added robot it costs the change check (one
+        ``stat`` and one small read).
+        """
+        robot = self._cache.get(robot_id)
+        if robot is not None:
+            return robot
+        entry = self._user_models.get(robot_id)
+        if entry is None or self.store is None or self.store.token() != self._user_token:
+            return None
+        return entry[1]
 
     def get(self, robot_id: str) -> RobotModel:
         """The robot's model, built on first use; raises :class:`UnknownNameError`."""
         robot = self._cache.get(robot_id)
         if robot is not None:
             return robot
-        entry = self.catalog.get(robot_id)
-        if entry is None:
+        entry = self.catalog.get(robot_id) or self.dh_builtin.get(robot_id)
+        if entry is not None:
+            with self._lock:
+                robot = self._cache.get(robot_id)
+                if robot is None:
+                    robot = self._cache[robot_id] = entry.build()
+            return robot
+        stored = self._refresh().get(robot_id)
+        if stored is None:
             raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
         with self._lock:
-            robot = self._cache.get(robot_id)
-            if robot is None:
-                robot = self._cache[robot_id] = entry.build()
+            cached = self._user_models.get(robot_id)
+            if cached is not None and cached[0] == stored.revision:
+                return cached[1]
+            urdf = stored.read_text(URDF_FILE)
+            if urdf is None:  # deleted by another process since the listing
+                raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
+            meta = stored.meta
+            robot = RobotModel(
+                robot_id,
+                urdf,
+                name=str(meta.get("name") or robot_id),
+                source=str(meta.get("source") or "upload"),
+                package_dirs=[str(erd_share_dir())],
+                srdf_text=stored.read_text(SRDF_FILE),
+                ee_frame=meta.get("ee_frame"),
+                description=str(meta.get("description") or ""),
+            )
+            self._user_models = {**self._user_models, robot_id: (stored.revision, robot)}
         return robot
+
+    def urdf_text(self, robot_id: str) -> str:
+        """The robot's URDF (the catalog file, the generated one for DH robots)."""
+        entry = self.catalog.get(robot_id)
+        if entry is not None:
+            return entry.urdf_path.read_text()
+        return self.get(robot_id).urdf_text
+
+    def dh_table(self, robot_id: str) -> DHTable | None:
+        """The DH table a robot was built from (SI), ``None`` for URDF robots.
+
+        Raises :class:`UnknownNameError` for an unknown id.
+        """
+        entry = self.dh_builtin.get(robot_id)
+        if entry is not None:
+            return entry.table
+        if robot_id in self.catalog:
+            return None
+        stored = self._refresh().get(robot_id)
+        if stored is None:
+            raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
+        text = stored.read_text(TABLE_FILE)
+        return DHTable.from_yaml(text) if text is not None else None
+
+    def source(self, robot_id: str) -> str:
+        """``example-robot-data``, ``dh`` or ``upload``; raises :class:`UnknownNameError`."""
+        if robot_id in self.catalog:
+            return "example-robot-data"
+        if robot_id in self.dh_builtin:
+            return "dh"
+        stored = self._refresh().get(robot_id)
+        if stored is None:
+            raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
+        return str(stored.meta.get("source") or "upload")
+
+    # ------------------------------------------------------------------ writes
+    def _writable(self, robot_id: str, field: str) -> RobotStore:
+        if self.store is None:
+            raise ForbiddenError("this service has no data directory for user robots")
+        check_robot_id(robot_id, field)
+        if self.exists(robot_id):
+            kind = "a built-in robot" if self.is_builtin(robot_id) else "a robot"
+            raise ConflictError(f"{kind} with id {robot_id!r} already exists", field)
+        return self.store
+
+    def _stored(self, stored: StoredRobot, robot: RobotModel) -> RobotModel:
+        self._user_models = {**self._user_models, stored.id: (stored.revision, robot)}
+        return robot
+
+    def import_dh(self, table: DHTable) -> RobotModel:
+        """Add a robot from a validated DH table; its id is the table's ``name``.
+
+        Raises :class:`ConflictError` (id taken by any robot) or :class:`InvalidInputError`.
+        """
+        store = self._writable(table.name, "name")
+        if table.dof > MAX_DH_JOINTS:
+            raise InvalidInputError(f"at most {MAX_DH_JOINTS} rows, got {table.dof}", "joints")
+        try:
+            urdf = to_urdf(table)
+        except DHError as exc:
+            raise dh_error(exc) from None
+        robot = build_checked_model(
+            table.name,
+            urdf,
+            source="dh",
+            ee_frame=DH_EE_FRAME,
+            description=table.description,
+            urdf_field="body",
+        )
+        meta = {
+            "name": table.name,
+            "source": "dh",
+            "description": table.description,
+            "ee_frame": DH_EE_FRAME,
+            "joints": robot.n,
+        }
+        files = {URDF_FILE: urdf.encode(), TABLE_FILE: table_yaml(table)}
+        return self._stored(store.create(table.name, meta, files), robot)
+
+    def add_urdf(
+        self,
+        robot_id: str,
+        urdf: str,
+        *,
+        srdf: str | None = None,
+        ee_frame: str | None = None,
+        description: str = "",
+    ) -> RobotModel:
+        """Add a robot from client-supplied URDF (and SRDF) text, checked first.
+
+        The XML is parsed with defusedxml (no DTD, entities or external references) and
+        checked (:func:`check_urdf_document`) before Pinocchio sees it.
+        """
+        store = self._writable(robot_id, "name")
+        root = parse_untrusted_xml(urdf, "urdf")
+        check_urdf_document(root, "urdf")
+        if srdf is not None:
+            check_srdf_document(srdf, {link.get("name", "") for link in root.findall("link")})
+        robot = build_checked_model(
+            robot_id,
+            urdf,
+            source="upload",
+            srdf=srdf,
+            ee_frame=ee_frame,
+            description=description,
+            package_dirs=[str(erd_share_dir())],
+        )
+        meta = {
+            "name": robot_id,
+            "source": "upload",
+            "description": description,
+            "ee_frame": robot.ee_frame,
+            "joints": robot.n,
+        }
+        files = {URDF_FILE: urdf.encode()}
+        if srdf is not None:
+            files[SRDF_FILE] = srdf.encode()
+        return self._stored(store.create(robot_id, meta, files), robot)
+
+    def delete(self, robot_id: str) -> None:
+        """Remove a user-added robot; built-in robots raise :class:`ForbiddenError`."""
+        if self.is_builtin(robot_id):
+            raise ForbiddenError(
+                f"robot {robot_id!r} is built in and cannot be deleted", "robot_id"
+            )
+        if self.store is None:
+            raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
+        self.store.delete(robot_id)
+        self._user_models = {k: v for k, v in self._user_models.items() if k != robot_id}

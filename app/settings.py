@@ -22,6 +22,9 @@ class Settings(BaseSettings):
     api_token: str | None = Field(None, description="Bearer token required on write endpoints.")
     cors_origins: list[str] = Field(default_factory=list, description="Allowed CORS origins.")
     max_body_bytes: int = Field(64 * 1024 * 1024, ge=1024, description="Largest request body.")
+    max_upload_bytes: int = Field(
+        5 * 1024 * 1024, ge=1024, description="Largest robot upload (POST /robots/urdf, /dh)."
+    )
     max_batch: int = Field(100_000, ge=1, description="Largest batch (configurations, targets).")
     ik_max_timeout_ms: float = Field(1000.0, gt=0, description="Cap on an IK request's budget.")
 

@@ -1,16 +1,38 @@
-"""GET /robots and GET /robots/{robot_id}: what robots exist and what they are made of."""
+"""Robots: what exists, what each is made of, and adding or removing user robots.
+
+Reads: GET /robots, GET /robots/{robot_id}, GET /robots/{robot_id}/urdf and
+GET /robots/{robot_id}/dh. Writes (bearer token when ``DENAVIT_API_TOKEN`` is set):
+POST /robots/dh (import a DH table, JSON or YAML), POST /robots/urdf (upload URDF text),
+DELETE /robots/{robot_id} (user-added robots only). Write bodies are capped at
+``DENAVIT_MAX_UPLOAD_BYTES`` (413 beyond), and a robot is stored atomically: it is served
+(by every worker) once complete, or not at all.
+"""
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any, Literal
 
-from fastapi import APIRouter, Depends
+import yaml
+from fastapi import APIRouter, Depends, Request
 from pydantic import BaseModel, Field
+from starlette.responses import Response
 
-from app.api.common import ORJSONResponse, RobotId, registry
-from app.api.errors import ERROR_RESPONSES
+from app.api.common import (
+    ORJSONResponse,
+    RobotId,
+    Schema,
+    body_schema,
+    offload,
+    parse_json,
+    registry,
+    validate_body,
+)
+from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
+from app.api.security import require_token
 from app.kinematics.collision import collision_link_pairs
-from app.registry import Registry
+from app.kinematics.models import RobotModel
+from app.registry import MalformedDocumentError, Registry, parse_dh_document
+from app.store import ID_PATTERN
 
 router = APIRouter(prefix="/robots", tags=["robots"])
 
@@ -78,8 +100,257 @@ class RobotDetail(BaseModel):
     )
 
 
+# ---------------------------------------------------------------------- DH table documents
+class DHUnitsDoc(Schema):
+    """Units of the table's numbers (the service converts to SI on import)."""
+
+    length: Literal["m", "cm", "mm"] = Field("m", description="Unit of a, d, xyz, limits.")
+    angle: Literal["rad", "deg"] = Field("rad", description="Unit of alpha, theta, rpy, limits.")
+
+
+class DHTransformDoc(Schema):
+    """A fixed transform: translation ``xyz`` then rotation ``rpy`` (R = Rz·Ry·Rx)."""
+
+    xyz: list[float] = Field([0.0, 0.0, 0.0], min_length=3, max_length=3)
+    rpy: list[float] = Field([0.0, 0.0, 0.0], min_length=3, max_length=3)
+
+
+class DHGeometryDoc(Schema):
+    """Generated capsule geometry."""
+
+    radius: float = Field(0.02, ge=0, description="Capsule radius in metres (0: none).")
+
+
+class DHRowDoc(Schema):
+    """One row: joint i's DH parameters."""
+
+    name: str | None = Field(None, description="Joint name (default j<i>, 1-based).")
+    type: Literal["revolute", "prismatic", "continuous"] = Field("revolute")
+    a: float = Field(description="Link length (a_i; a_{i-1} in the modified convention).")
+    alpha: float = Field(description="Link twist (α_i; α_{i-1} in the modified convention).")
+    d: float = Field(description="Link offset; the constant part for a prismatic joint.")
+    theta: float = Field(description="Joint angle offset (θ = q + theta for revolute joints).")
+    lower: float | None = Field(None, description="Lower limit of q (table units).")
+    upper: float | None = Field(None, description="Upper limit of q (table units).")
+    velocity: float | None = Field(None, gt=0, description="Velocity limit (units per second).")
+    effort: float | None = Field(None, gt=0, description="Effort limit (N·m or N).")
+
+
+class DHTableDoc(Schema):
+    """A Denavit–Hartenberg table (JSON, or YAML with ``Content-Type: application/yaml``).
+
+    ``standard``: A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i); ``modified`` (Craig): A_i =
+    Rx(α_{i-1})·Tx(a_{i-1})·Rz(θ_i)·Tz(d_i). The robot's frames ``dh_0`` … ``dh_n`` are the
+    DH frames (world pose B·A_1⋯A_i) and ``tool`` (the default end effector) is
+    dh_n·T_tool.
+    """
+
+    name: str = Field(
+        pattern=ID_PATTERN.pattern, description="Robot id: 1-64 of a-z, 0-9, '_' and '-'."
+    )
+    description: str = Field("", max_length=1000)
+    convention: Literal["standard", "modified"]
+    units: DHUnitsDoc = Field(default_factory=DHUnitsDoc)
+    base: DHTransformDoc | None = Field(None, description="World → DH frame 0.")
+    tool: DHTransformDoc | None = Field(None, description="DH frame n → tool (TCP).")
+    geometry: DHGeometryDoc | None = None
+    joints: list[DHRowDoc] = Field(min_length=1, max_length=64)
+
+
+class UrdfUpload(Schema):
+    """A robot given as URDF text (and optionally SRDF)."""
+
+    name: str = Field(
+        pattern=ID_PATTERN.pattern,
+        description="Robot id: 1-64 of a-z, 0-9, '_' and '-' (used in /robots/{robot_id}).",
+    )
+    urdf: str = Field(
+        min_length=1,
+        description="URDF document. No DTD or entities; mesh filenames must be "
+        "package://<package>/<path> URIs; only revolute, continuous, prismatic and fixed "
+        "joints.",
+    )
+    srdf: str | None = Field(None, description="SRDF document (disabled collision pairs).")
+    ee_frame: str | None = Field(
+        None, max_length=256, description="Default end-effector frame (default: deepest link)."
+    )
+    description: str = Field("", max_length=1000, description="Short description.")
+
+
+_WRITE_ERRORS: dict[int | str, dict[str, Any]] = {
+    code: {"model": Problem, "content": {"application/problem+json": {}}, "description": text}
+    for code, text in {
+        400: "The body is not JSON (or YAML).",
+        401: "A bearer token is required.",
+        403: "Wrong token, or a built-in robot.",
+        409: "The robot id is taken.",
+        413: "The body exceeds DENAVIT_MAX_UPLOAD_BYTES.",
+        415: "Unsupported Content-Type.",
+        422: "A field failed validation; `field` names it.",
+    }.items()
+}
+_JSON_TYPES = ("application/json", "")
+_YAML_TYPES = ("application/yaml", "application/x-yaml", "text/yaml", "text/x-yaml")
+
+
+def robot_detail(robot: RobotModel) -> dict[str, Any]:
+    """The wire description of a robot (GET /robots/{robot_id})."""
+    return {
+        "id": robot.id,
+        "name": robot.name,
+        "source": robot.source,
+        "description": robot.description,
+        "joints": [robot.describe_joint(j) for j in robot.joints],
+        "frames": [
+            {"name": f.name, "kind": f.kind, "parent_joint": f.parent_joint} for f in robot.frames
+        ],
+        "end_effector": robot.ee_frame,
+        "neutral": robot.neutral().tolist(),
+        "has_collision_geometry": robot.has_collision_geometry,
+        "collision_pairs": [list(p) for p in collision_link_pairs(robot)],
+    }
+
+
+def _created(robot: RobotModel) -> ORJSONResponse:
+    return ORJSONResponse(
+        robot_detail(robot), status_code=201, headers={"Location": f"/robots/{robot.id}"}
+    )
+
+
+async def _read_upload(request: Request) -> bytes | Response:
+    """The request body, or a 413 problem past ``DENAVIT_MAX_UPLOAD_BYTES`` (never read whole)."""
+    limit = request.app.state.settings.max_upload_bytes
+    too_large = problem(
+        413,
+        f"body: larger than the {limit}-byte limit of robot uploads (DENAVIT_MAX_UPLOAD_BYTES)",
+        kind="body-too-large",
+        field="body",
+        instance=request.url.path,
+    )
+    length = request.headers.get("content-length", "")
+    if length.isdigit() and int(length) > limit:
+        return too_large
+    chunks: list[bytes] = []
+    total = 0
+    async for chunk in request.stream():
+        total += len(chunk)
+        if total > limit:
+            return too_large
+        chunks.append(chunk)
+    return b"".join(chunks)
+
+
+def _import_dh(reg: Registry, text: str, fmt: Literal["json", "yaml"]) -> RobotModel:
+    try:
+        table = parse_dh_document(text, fmt)
+    except MalformedDocumentError as exc:
+        raise MalformedBodyError(f"body: {exc.message}") from None
+    return reg.import_dh(table)
+
+
+# ---------------------------------------------------------------------- writes
+@router.post(
+    "/dh",
+    operation_id="import_dh_robot",
+    status_code=201,
+    response_model=RobotDetail,
+    dependencies=[Depends(require_token)],
+    responses=_WRITE_ERRORS,
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {
+                "application/json": {"schema": {"$ref": "#/components/schemas/DHTableDoc"}},
+                "application/yaml": {"schema": {"$ref": "#/components/schemas/DHTableDoc"}},
+            },
+        }
+    },
+)
+async def import_dh_robot(
+    request: Request, reg: Annotated[Registry, Depends(registry)]
+) -> Response:
+    """Add a robot from a DH table; its id is the table's ``name``.
+
+    The body is the table as JSON, or as YAML with ``Content-Type: application/yaml`` (or
+    ``text/yaml``); lengths in m/cm/mm and angles in rad/deg as its ``units`` say. The
+    service converts it to URDF (frames ``dh_0`` … ``dh_n`` and ``tool``, the default end
+    effector) and answers 201 with the robot's description. 409 if the id is taken by any
+    robot; 422 naming the field for a bad table (``joints.2.lower``); YAML aliases are
+    refused.
+    """
+    body = await _read_upload(request)
+    if isinstance(body, Response):
+        return body
+    media = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    if media in _JSON_TYPES or media.endswith("+json"):
+        fmt: Literal["json", "yaml"] = "json"
+    elif media in _YAML_TYPES:
+        fmt = "yaml"
+    else:
+        return problem(
+            415,
+            f"content-type: {media!r} is not accepted; send application/json or application/yaml",
+            kind="unsupported-media-type",
+            field="content-type",
+            instance=request.url.path,
+        )
+    try:
+        text = body.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise MalformedBodyError(f"body: not UTF-8 text ({exc.reason})") from None
+    return _created(await offload(_import_dh, reg, text, fmt))
+
+
+@router.post(
+    "/urdf",
+    operation_id="upload_urdf_robot",
+    status_code=201,
+    response_model=RobotDetail,
+    dependencies=[Depends(require_token)],
+    responses=_WRITE_ERRORS,
+    openapi_extra=body_schema(UrdfUpload),
+)
+async def upload_urdf_robot(
+    request: Request, reg: Annotated[Registry, Depends(registry)]
+) -> Response:
+    """Add a robot from URDF text (and optional SRDF); its id is ``name``.
+
+    The XML is parsed with defusedxml first: DTDs and entity declarations are refused, mesh
+    filenames must be ``package://<package>/<path>`` URIs without ``..``, and the links
+    must form one tree with at least one actuated joint; then Pinocchio builds the model.
+    201 with the robot's description; 409 if the id is taken; 413 past the upload limit.
+    """
+    body = await _read_upload(request)
+    if isinstance(body, Response):
+        return body
+    upload = validate_body(UrdfUpload, parse_json(body))
+    robot = await offload(
+        reg.add_urdf,
+        upload.name,
+        upload.urdf,
+        srdf=upload.srdf,
+        ee_frame=upload.ee_frame,
+        description=upload.description,
+    )
+    return _created(robot)
+
+
+@router.delete(
+    "/{robot_id}",
+    operation_id="delete_robot",
+    status_code=204,
+    dependencies=[Depends(require_token)],
+    responses={k: _WRITE_ERRORS[k] for k in (401, 403)} | {404: ERROR_RESPONSES[404]},
+)
+def delete_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> Response:
+    """Remove a user-added robot (every worker stops serving it); built-in robots: 403."""
+    reg.delete(robot_id)
+    return Response(status_code=204)
+
+
+# ---------------------------------------------------------------------- reads
 @router.get("", operation_id="list_robots", response_model=RobotList)
-async def list_robots(reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
+def list_robots(reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
     """List every robot: catalog robots, DH robots and user-added ones."""
     return ORJSONResponse(
         {
@@ -108,21 +379,59 @@ def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) ->
 
     Runs in the thread pool: the first request for a robot parses its URDF.
     """
-    robot = reg.get(robot_id)
-    return ORJSONResponse(
-        {
-            "id": robot.id,
-            "name": robot.name,
-            "source": robot.source,
-            "description": robot.description,
-            "joints": [robot.describe_joint(j) for j in robot.joints],
-            "frames": [
-                {"name": f.name, "kind": f.kind, "parent_joint": f.parent_joint}
-                for f in robot.frames
-            ],
-            "end_effector": robot.ee_frame,
-            "neutral": robot.neutral().tolist(),
-            "has_collision_geometry": robot.has_collision_geometry,
-            "collision_pairs": [list(p) for p in collision_link_pairs(robot)],
-        }
-    )
+    return ORJSONResponse(robot_detail(reg.get(robot_id)))
+
+
+@router.get(
+    "/{robot_id}/urdf",
+    operation_id="get_robot_urdf",
+    response_class=Response,
+    responses={
+        200: {
+            "content": {"application/xml": {"schema": {"type": "string"}}},
+            "description": "URDF",
+        },
+        404: ERROR_RESPONSES[404],
+    },
+)
+def get_robot_urdf(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> Response:
+    """The robot's URDF: the catalog file, the uploaded text, or the one generated from a
+    DH table (links ``dh_0`` … ``dh_n`` and ``tool``; SI units)."""
+    return Response(reg.urdf_text(robot_id), media_type="application/xml")
+
+
+@router.get(
+    "/{robot_id}/dh",
+    operation_id="get_robot_dh",
+    response_model=DHTableDoc,
+    responses={
+        200: {"content": {"application/yaml": {}}},
+        404: {**ERROR_RESPONSES[404], "description": "Unknown robot, or not a DH robot."},
+    },
+)
+def get_robot_dh(
+    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+) -> Response:
+    """The DH table a robot was built from, in SI units (m, rad) as validated on import.
+
+    JSON by default; YAML when the ``Accept`` header asks for ``application/yaml``. 404 for
+    robots that were not built from a DH table (their URDF is at /robots/{robot_id}/urdf).
+    """
+    table = reg.dh_table(robot_id)
+    if table is None:
+        return problem(
+            404,
+            f"robot_id: robot {robot_id!r} ({reg.source(robot_id)}) was not built from a DH "
+            f"table; its URDF is at /robots/{robot_id}/urdf",
+            kind="not-a-dh-robot",
+            field="robot_id",
+            instance=request.url.path,
+        )
+    doc = table.to_dict()
+    accept = request.headers.get("accept", "")
+    if any(t in accept for t in _YAML_TYPES):
+        return Response(
+            yaml.safe_dump(doc, sort_keys=False, allow_unicode=True),
+            media_type="application/yaml",
+        )
+    return ORJSONResponse(doc)
