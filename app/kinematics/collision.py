@@ -15,10 +15,11 @@ Two geometry modes:
     The meshes as given: exact, and the slowest. Distances between two meshes are unsigned:
     coal reports 0 for penetrating meshes.
 ``convex``
-    Each mesh is replaced by its convex hull (coal ``BVHModel.buildConvexRepresentation``,
-    qhull), checked with GJK/EPA: several times faster, conservative (a hull contains its
-    mesh, so it can report collisions the mesh does not have), and distances are signed
-    (negative = penetration depth). Primitives are unchanged.
+    Each mesh is replaced by its convex hull (coal ``BVHModel.buildConvexHull``, qhull),
+    checked with GJK/EPA: several times faster, conservative (a hull contains its mesh, so
+    it can report collisions the mesh does not have; its distances are never larger than
+    the mesh's, up to GJK's 1e-6 m tolerance), and distances are signed (negative =
+    penetration depth). Primitives are unchanged.
 
 Checked pairs
 -------------
@@ -151,7 +152,7 @@ def checked_link_pairs(robot: RobotModel, link_joints: dict[str, int]) -> list[L
     list of (str, str)
         Pairs ``(a, b)`` ordered by the links' frame ids (a before b).
     """
-    order = {name: robot.model.getFrameId(name) for name in link_joints}
+    order = {name: robot.frame_id(name) for name in link_joints}
     links = sorted(link_joints, key=lambda name: (order[name], name))
     bodies = set(link_joints.values())
     adjacent = _adjacent_bodies(robot.model, bodies)
@@ -326,7 +327,7 @@ class CollisionModel:
         if mode == "convex":
             for go in gm.geometryObjects:
                 if isinstance(go.geometry, coal.BVHModelBase):
-                    go.geometry.buildConvexRepresentation(False)
+                    go.geometry.buildConvexHull(True, "Qt")
                     go.geometry = go.geometry.convex
         self.geometry = gm
         self.geom_links = [robot.model.frames[go.parentFrame].name for go in gm.geometryObjects]
