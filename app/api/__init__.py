@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from app.api import analysis, collisions, fk, health, jacobian, robots, scenes
+from app.api import analysis, collisions, fk, health, ik, jacobian, robots, scenes, velocity
 
 #: Routers mounted by :func:`app.main.create_app`, in documentation order.
 ROUTERS = [
@@ -13,4 +13,6 @@ ROUTERS = [
     analysis.router,
     collisions.router,
     scenes.router,
+    ik.router,
+    velocity.router,
 ]

@@ -1,0 +1,391 @@
+"""Inverse kinematics: POST /robots/{robot_id}/ik and /ik/batch."""
+
+from __future__ import annotations
+
+import time
+from typing import Annotated, Any, Literal
+
+import numpy as np
+import pinocchio as pin
+from fastapi import APIRouter, Depends, Request
+from pydantic import BaseModel, Field
+
+from app.api.common import (
+    Finite,
+    Matrix4,
+    ORJSONResponse,
+    Quat,
+    RobotId,
+    Schema,
+    Vec3,
+    load_robot,
+    offload,
+    registry,
+)
+from app.api.errors import ERROR_RESPONSES
+from app.kinematics import ik
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.models import RobotModel
+from app.kinematics.rotations import quaternion_to_matrix
+from app.registry import Registry
+
+router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
+
+NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
+Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
+
+#: Largest deviation of |quaternion| from 1 accepted (the quaternion is then normalised).
+QUAT_NORM_TOL = 1e-3
+#: Largest deviation of RᵀR from I (and of the bottom row from [0 0 0 1]) accepted in a matrix.
+MATRIX_TOL = 1e-6
+#: IK requests with a budget up to this run on the event loop (no thread hop).
+INLINE_BUDGET_MS = 5.0
+
+MODE_DOC = (
+    "pose (default): full 6-D pose | position: the frame origin only, orientation free "
+    "(3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only."
+)
+
+
+class Target(Schema):
+    """Desired placement of the frame in the root (world) frame."""
+
+    position: Vec3 | None = Field(None, description="[x, y, z] in metres.")
+    orientation: Quat | None = Field(
+        None, description="Quaternion [x, y, z, w]; normalised if |q| is within 1e-3 of 1."
+    )
+    matrix: Matrix4 | None = Field(
+        None, description="4×4 homogeneous transform (instead of position/orientation)."
+    )
+
+
+class Tolerance(Schema):
+    """Success thresholds."""
+
+    position: Positive = Field(1e-5, description="Largest position error ‖p − p_t‖ (m).")
+    orientation: Positive = Field(1e-5, description="Largest rotation angle to the target (rad).")
+
+
+class IKOptions(Schema):
+    """Options shared by single and batch IK."""
+
+    frame: str | None = Field(None, description="Frame to place; default the end effector.")
+    mode: Literal["pose", "position", "orientation"] = Field("pose", description=MODE_DOC)
+    weights: Annotated[list[NonNegative], Field(min_length=6, max_length=6)] | None = Field(
+        None,
+        description="Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); "
+        "0 frees a component (not checked against the tolerance).",
+    )
+    seed: list[Finite] | dict[str, Finite] | None = Field(
+        None,
+        description="Start configuration: one value per joint (joint order) or joint → value "
+        "(others: middle of their limits). Default: the middle of the joint limits.",
+    )
+    tolerance: Tolerance = Field(default_factory=Tolerance)
+    timeout_ms: Positive = Field(
+        5.0, description="Time budget (ms) per target; capped by the server's ik_max_timeout_ms."
+    )
+    max_iterations: int | None = Field(
+        None, ge=1, le=10_000_000, description="Cap on solver iterations (Jacobian evaluations)."
+    )
+
+
+class IKRequest(IKOptions):
+    """One IK query."""
+
+    target: Target
+    num_solutions: int = Field(
+        1, ge=1, le=64, description="Distinct solutions wanted (e.g. elbow up/down)."
+    )
+
+
+class IKSolutionOut(BaseModel):
+    """A verified solution."""
+
+    q: list[float] = Field(description="Configuration in joint order (rad, m).")
+    joint_positions: dict[str, float]
+    position_error: float = Field(description="‖p − p_t‖ (m), by forward kinematics.")
+    orientation_error: float = Field(description="Rotation angle to the target (rad).")
+
+
+class IKResponse(BaseModel):
+    """Result; no solution is not an error (success false, best configuration found)."""
+
+    robot_id: str
+    frame: str
+    mode: str
+    success: bool
+    status: Literal["converged", "not_converged", "timeout"]
+    q: list[float] = Field(description="Best configuration (first solution, or lowest error).")
+    joint_positions: dict[str, float]
+    position_error: float = Field(description="Of q: ‖p − p_t‖ (m).")
+    orientation_error: float = Field(description="Of q: rotation angle to the target (rad).")
+    solutions: list[IKSolutionOut] = Field(description="Distinct solutions, nearest seed first.")
+    iterations: int
+    restarts: int
+    solve_time_ms: float
+    method: str = Field(description="analytic | numeric | analytic+numeric")
+
+
+class IKBatchRequest(IKOptions):
+    """Many targets for one frame."""
+
+    targets: list[Target] = Field(min_length=1, description="Targets, solved in order.")
+    chain_seeds: bool = Field(
+        True,
+        description="Seed each target with the previous solution (trajectories); false: every "
+        "target starts from `seed`.",
+    )
+
+
+class IKBatchItem(BaseModel):
+    """Result for one target."""
+
+    success: bool
+    status: Literal["converged", "not_converged", "timeout"]
+    q: list[float]
+    position_error: float
+    orientation_error: float
+    iterations: int
+    restarts: int
+    solve_time_ms: float
+
+
+class IKBatchResponse(BaseModel):
+    """Results in target order."""
+
+    robot_id: str
+    frame: str
+    mode: str
+    joint_names: list[str]
+    solved: int = Field(description="How many targets succeeded.")
+    results: list[IKBatchItem]
+    total_time_ms: float
+
+
+# ----------------------------------------------------------------------------- parsing
+def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE3:
+    """The target as a Pinocchio SE3, validated; components a mode ignores may be omitted."""
+    if target.matrix is not None:
+        if target.position is not None or target.orientation is not None:
+            raise InvalidInputError("give either matrix or position/orientation", field)
+        M = np.array(target.matrix, dtype=float)
+        if np.abs(M[3] - np.array([0.0, 0.0, 0.0, 1.0])).max() > MATRIX_TOL:
+            raise InvalidInputError("the last row must be [0, 0, 0, 1]", f"{field}.matrix")
+        R = M[:3, :3]
+        if np.abs(R.T @ R - np.eye(3)).max() > MATRIX_TOL or np.linalg.det(R) <= 0.0:
+            raise InvalidInputError(
+                "the rotation part must be orthonormal with determinant +1", f"{field}.matrix"
+            )
+        U, _, Vt = np.linalg.svd(R)  # nearest rotation (removes rounding)
+        return pin.SE3(U @ Vt, M[:3, 3].copy())
+    p = np.zeros(3)
+    R = np.eye(3)
+    if target.position is not None:
+        p = np.array(target.position, dtype=float)
+    elif mode != "orientation":
+        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
+    if target.orientation is not None:
+        qv = np.array(target.orientation, dtype=float)
+        norm = float(np.linalg.norm(qv))
+        if not abs(norm - 1.0) <= QUAT_NORM_TOL:
+            raise InvalidInputError(
+                f"must be a unit quaternion [x, y, z, w] (norm {norm:.6g})",
+                f"{field}.orientation",
+            )
+        R = quaternion_to_matrix(qv / norm)
+    elif mode != "position":
+        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.orientation")
+    return pin.SE3(R, p)
+
+
+def seed_configuration(robot: RobotModel, seed: Any) -> np.ndarray:
+    """Wire seed from a list or a joint → value map (default: middle of the limits)."""
+    if seed is None:
+        return robot.mid_range()
+    if isinstance(seed, dict):
+        out = robot.mid_range()
+        for name, value in seed.items():
+            out[robot.joint_index(name, field=f"seed.{name}")] = value
+        return out
+    return robot.configuration(seed, field="seed")
+
+
+def _budget(request: Request, timeout_ms: float) -> None:
+    cap = request.app.state.settings.ik_max_timeout_ms
+    if timeout_ms > cap:
+        raise InvalidInputError(
+            f"{timeout_ms} ms exceeds the server's cap of {cap} ms", "timeout_ms"
+        )
+
+
+def _options(robot: RobotModel, body: IKOptions) -> dict[str, Any]:
+    frame = body.frame or robot.ee_frame
+    robot.frame_id(frame)
+    if body.weights is not None:
+        rows = ik.MODE_ROWS[body.mode]
+        if not any(body.weights[i] > 0.0 for i in rows):
+            raise InvalidInputError(f"every weight of mode {body.mode!r} is zero", "weights")
+    return {
+        "frame": frame,
+        "mode": body.mode,
+        "weights": None if body.weights is None else np.array(body.weights),
+        "tolerance": (body.tolerance.position, body.tolerance.orientation),
+        "timeout_ms": body.timeout_ms,
+        "max_iterations": body.max_iterations,
+    }
+
+
+def _named(robot: RobotModel, q: np.ndarray) -> dict[str, float]:
+    return dict(zip(robot.joint_names, q.tolist(), strict=True))
+
+
+def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict, n: int) -> dict:
+    frame = opts["frame"]
+    res = ik.solve(
+        robot,
+        frame,
+        target,
+        mode=opts["mode"],
+        weights=opts["weights"],
+        seed=seed,
+        tolerance=opts["tolerance"],
+        timeout_ms=opts["timeout_ms"],
+        max_iterations=opts["max_iterations"],
+        num_solutions=n,
+    )
+    return {
+        "robot_id": robot.id,
+        "frame": frame,
+        "mode": opts["mode"],
+        "success": res.success,
+        "status": res.status,
+        "q": res.q.tolist(),
+        "joint_positions": _named(robot, res.q),
+        "position_error": res.position_error,
+        "orientation_error": res.orientation_error,
+        "solutions": [
+            {
+                "q": s.q.tolist(),
+                "joint_positions": _named(robot, s.q),
+                "position_error": s.position_error,
+                "orientation_error": s.orientation_error,
+            }
+            for s in res.solutions
+        ],
+        "iterations": res.iterations,
+        "restarts": res.restarts,
+        "solve_time_ms": res.solve_time_ms,
+        "method": res.method,
+    }
+
+
+def _solve_batch(
+    robot: RobotModel, targets: list[pin.SE3], seed: np.ndarray, opts: dict, chain: bool
+) -> dict:
+    t0 = time.perf_counter()
+    results = []
+    solved = 0
+    current = seed
+    for T in targets:
+        res = ik.solve(
+            robot,
+            opts["frame"],
+            T,
+            mode=opts["mode"],
+            weights=opts["weights"],
+            seed=current,
+            tolerance=opts["tolerance"],
+            timeout_ms=opts["timeout_ms"],
+            max_iterations=opts["max_iterations"],
+        )
+        solved += res.success
+        if chain and res.success:
+            current = res.q
+        results.append(
+            {
+                "success": res.success,
+                "status": res.status,
+                "q": res.q.tolist(),
+                "position_error": res.position_error,
+                "orientation_error": res.orientation_error,
+                "iterations": res.iterations,
+                "restarts": res.restarts,
+                "solve_time_ms": res.solve_time_ms,
+            }
+        )
+    return {
+        "robot_id": robot.id,
+        "frame": opts["frame"],
+        "mode": opts["mode"],
+        "joint_names": robot.joint_names,
+        "solved": solved,
+        "results": results,
+        "total_time_ms": (time.perf_counter() - t0) * 1e3,
+    }
+
+
+# ------------------------------------------------------------------------------ routes
+@router.post(
+    "/ik",
+    operation_id="solve_ik",
+    response_model=IKResponse,
+    responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+)
+async def solve_ik(
+    robot_id: RobotId,
+    body: IKRequest,
+    request: Request,
+    reg: Annotated[Registry, Depends(registry)],
+) -> ORJSONResponse:
+    """Joint configurations that place a frame at a target pose.
+
+    Damped least squares (Levenberg–Marquardt) on the SE(3) error with random restarts
+    within the time budget, seeded by closed forms where the chain admits one (see
+    docs/ik.md). Every solution is verified by forward kinematics and lies within the joint
+    limits. An unreachable target is not an error: 200 with `success: false`, the best
+    configuration found and its errors.
+    """
+    _budget(request, body.timeout_ms)
+    robot = await load_robot(reg, robot_id)
+    opts = _options(robot, body)
+    target = target_placement(body.target, body.mode)
+    seed = seed_configuration(robot, body.seed)
+    if body.timeout_ms <= INLINE_BUDGET_MS:
+        out = _solve_one(robot, target, seed, opts, body.num_solutions)
+    else:
+        out = await offload(_solve_one, robot, target, seed, opts, body.num_solutions)
+    return ORJSONResponse(out)
+
+
+@router.post(
+    "/ik/batch",
+    operation_id="solve_ik_batch",
+    response_model=IKBatchResponse,
+    responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+)
+async def solve_ik_batch(
+    robot_id: RobotId,
+    body: IKBatchRequest,
+    request: Request,
+    reg: Annotated[Registry, Depends(registry)],
+) -> ORJSONResponse:
+    """IK for many targets of one frame, in order, computed in the work pool.
+
+    With `chain_seeds` (default) each target is seeded with the previous solution, which
+    keeps a trajectory on one branch; otherwise every target starts from `seed`.
+    """
+    _budget(request, body.timeout_ms)
+    limit = request.app.state.settings.max_batch
+    if len(body.targets) > limit:
+        raise InvalidInputError(
+            f"{len(body.targets)} targets exceed the limit of {limit}", "targets"
+        )
+    robot = await load_robot(reg, robot_id)
+    opts = _options(robot, body)
+    targets = [
+        target_placement(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)
+    ]
+    seed = seed_configuration(robot, body.seed)
+    out = await offload(_solve_batch, robot, targets, seed, opts, body.chain_seeds)
+    return ORJSONResponse(out)

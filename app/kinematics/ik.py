@@ -1,0 +1,595 @@
+"""Numeric inverse kinematics: damped least squares with restarts, in wire joint space.
+
+Problem
+-------
+Find a wire configuration q within the joint limits such that the placement of ``frame``,
+oMf(q) = (R, p), equals the target oMt = (R_t, p_t) in the root (world) frame.
+
+Error and its Jacobian
+----------------------
+The error is the *decoupled* SE(3) error expressed in the **target frame's axes**::
+
+    e(q) = [ e_p ; e_R ] = [ R_tᵀ (p − p_t) ; log3(R_tᵀ R) ]          (6,)
+
+so ‖e_p‖ is the position error (m) and ‖e_R‖ the rotation angle between the frame and the
+target (rad), exactly the two numbers the tolerances bound. With the frame Jacobian in the
+frame's own axes, J_L = [J_v; J_ω] (Pinocchio ``LOCAL``: ṗ = R J_v q̇ and Ṙ = R [J_ω q̇]×),
+and R_e = R_tᵀ R:
+
+    d e_p / dq = R_e · J_v                      (since ė_p = R_tᵀ ṗ = R_tᵀ R J_v q̇)
+    d e_R / dq = Jlog3(R_e) · J_ω               (since Ṙ_e = R_e [J_ω q̇]×, a right
+                                                 perturbation, and Pinocchio's Jlog3 is the
+                                                 derivative of log3(R_e · exp(δ)) at δ = 0)
+
+Unlike the coupled ``log6`` error (whose translation part is V(ω)⁻¹·Rᵀp, a screw motion),
+the decoupled error drives the origin along a straight line and the orientation along the
+geodesic independently, which converges in fewer iterations from far seeds (the error KDL and
+TRAC-IK use). Both have the same zero set.
+
+Step (Levenberg–Marquardt damped least squares)
+-----------------------------------------------
+With the task rows selected by ``mode``/``weights`` (row i scaled by √w_i), J_e the error
+Jacobian restricted to the joints supporting the frame, and a null-space preference
+z = α (q_ref − q) for redundant chains (more joints than task rows)::
+
+    A  = J_e J_eᵀ + λ² I,         λ² = E + μ,     E = ½ ‖e‖²   (Sugihara's LM damping)
+    Δq = z − J_eᵀ A⁻¹ (e + J_e z)
+
+which is the damped least-squares step Δq = −J_eᵀ A⁻¹ e plus the projection of z on the
+(damped) null space, (I − J_eᵀ A⁻¹ J_e) z, in one linear solve. The damping shrinks with the
+error, so the iteration is Gauss–Newton (quadratic convergence) near a solution and a short,
+bounded gradient-like step far from it or near singularities.
+
+Limits and restarts
+-------------------
+Every iterate is clipped to the joint limits; continuous joints are wrapped to (−π, π].
+When the error stalls (a limit blocks progress, a local minimum, a singularity) the solver
+restarts from a uniformly random configuration within the limits (TRAC-IK's random jumps),
+until the time budget or the iteration cap is spent. Only the joints that support the frame
+move; the others keep their seed value.
+
+Every solution is verified by an independent forward-kinematics evaluation at the returned
+wire configuration (error against the target, joint limits, and the optional ``accept``
+predicate, e.g. collision-free) before it is reported as a success.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+import pinocchio as pin
+from scipy.linalg.lapack import dposv as _posv
+
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.models import RobotModel
+
+Mode = Literal["pose", "position", "orientation"]
+Status = Literal["converged", "not_converged", "timeout"]
+
+MODES: tuple[str, ...] = ("pose", "position", "orientation")
+#: Task rows of each mode in e = [e_p; e_R].
+MODE_ROWS = {"pose": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "orientation": (3, 4, 5)}
+
+#: Default tolerances: position (m) and orientation (rad).
+DEFAULT_TOLERANCE = (1e-5, 1e-5)
+#: Default time budget (ms).
+DEFAULT_TIMEOUT_MS = 5.0
+#: Two solutions are distinct when some joint differs by more than this (rad or m).
+DISTINCT = 1e-3
+
+_TWO_PI = 2.0 * math.pi
+#: Damping floor μ added to λ² (keeps A invertible at exact singularities).
+_MU = 1e-10
+#: Error-proportional damping: λ² = _DAMP·‖e‖² + μ.
+_DAMP = 0.01
+#: Null-space gain α towards the reference configuration (redundant chains only).
+_NULL_GAIN = 0.2
+#: Squared task error below which the null-space gain fades proportionally (a constant pull
+#: would leave a second-order task error each step and make convergence linear).
+_NULL_ENERGY = 1e-2
+#: Largest joint step per iteration (rad or m), keeps the linearisation honest.
+_MAX_STEP = 2.0
+#: Iterations without a 10 % error decrease before a restart.
+_STALL = 3
+#: Iteration cap of one attempt (from the seed or a restart).
+_ATTEMPT_CAP = 30
+#: Seed of the restart generator when none is given (reproducible answers).
+_RNG_SEED = 0x1C0DE
+
+
+@dataclass(slots=True)
+class IKSolution:
+    """One verified solution: wire configuration and its errors against the target."""
+
+    q: np.ndarray
+    position_error: float
+    orientation_error: float
+
+
+@dataclass(slots=True)
+class IKResult:
+    """Outcome of :func:`solve`.
+
+    ``q`` is the best configuration (the first solution, or the lowest-error iterate when
+    nothing converged); ``solutions`` are distinct verified solutions sorted by distance to
+    the seed. ``iterations`` counts Jacobian evaluations over all attempts, ``restarts`` the
+    random jumps, ``method`` is ``analytic``, ``numeric`` or ``analytic+numeric``.
+    """
+
+    success: bool
+    status: Status
+    q: np.ndarray
+    position_error: float
+    orientation_error: float
+    solutions: list[IKSolution] = field(default_factory=list)
+    iterations: int = 0
+    restarts: int = 0
+    solve_time_ms: float = 0.0
+    method: str = "numeric"
+
+
+class Chain:
+    """What the solver precomputes for one (robot, frame): the joints that move it.
+
+    Built once per model and frame (``RobotModel.lazy``) and read-only afterwards.
+    """
+
+    def __init__(self, robot: RobotModel, frame: str) -> None:
+        self.frame = frame
+        self.frame_id = robot.frame_id(frame)
+        self.active = robot.supporting_joints(frame)  # wire indices
+        joints = [robot.joints[i] for i in self.active]
+        self.k = len(joints)
+        self.cols = np.array([j.idx_v for j in joints], dtype=int)
+        cont = np.array([j.continuous for j in joints], dtype=bool)
+        self.has_continuous = bool(cont.any())
+        self.plain = np.flatnonzero(~cont)  # positions within the active set
+        self.plain_q = np.array([j.idx_q for j in joints if not j.continuous], dtype=int)
+        self.cont = np.flatnonzero(cont)
+        self.cont_q = np.array([j.idx_q for j in joints if j.continuous], dtype=int)
+        self.cont_q1 = self.cont_q + 1
+        self.lower = robot.lower[self.active].copy()
+        self.upper = robot.upper[self.active].copy()
+        # Restart sampling box: the limits, or one turn for continuous joints.
+        self.sample_lo = np.where(np.isfinite(self.lower), self.lower, -math.pi)
+        self.sample_hi = np.where(np.isfinite(self.upper), self.upper, math.pi)
+        self.clip_lo = np.where(np.isfinite(self.lower), self.lower, -np.inf)
+        self.clip_hi = np.where(np.isfinite(self.upper), self.upper, np.inf)
+
+
+def chain(robot: RobotModel, frame: str) -> Chain:
+    """The cached :class:`Chain` of ``frame`` (raises UnknownNameError for a bad frame)."""
+    robot.frame_id(frame)
+    return robot.lazy(f"ik.chain:{frame}", lambda r: Chain(r, frame))
+
+
+def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
+    """Position error (m), rotation angle (rad) and e = [p − p_t; log3(R R_tᵀ)] (world axes)."""
+    ep = T.translation - target.translation
+    eR = pin.log3(T.rotation @ target.rotation.T)
+    return float(math.sqrt(ep @ ep)), float(math.sqrt(eR @ eR)), np.concatenate([ep, eR])
+
+
+def wrap_angle(x: np.ndarray) -> np.ndarray:
+    """Angles wrapped to [−π, π)."""
+    return (x + math.pi) % _TWO_PI - math.pi
+
+
+def joint_distance(robot: RobotModel, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Per-joint |a − b| on the wire, continuous joints measured around the circle."""
+    d = np.abs(a - b)
+    if robot.has_continuous:
+        c = robot._cont_wire
+        d[c] = np.abs(wrap_angle(a[c] - b[c]))
+    return d
+
+
+def _task(
+    mode: str, weights: np.ndarray | None
+) -> tuple[np.ndarray, np.ndarray | None, bool, bool]:
+    """Rows of e to drive, their √weights (None when all 1), and which errors are checked."""
+    if weights is None:
+        return _TASKS[mode]
+    rows = np.array(MODE_ROWS[mode], dtype=int)
+    sw = None
+    if weights is not None:
+        w = np.asarray(weights, dtype=float)[rows]
+        keep = w > 0.0
+        rows = rows[keep]
+        w = w[keep]
+        if rows.size == 0:
+            raise InvalidInputError("every weight of the chosen mode is zero", "weights")
+        if not np.all(w == 1.0):
+            sw = np.sqrt(w)
+    check_pos = bool(np.any(rows < 3))
+    check_rot = bool(np.any(rows >= 3))
+    return rows, sw, check_pos, check_rot
+
+
+_TASKS = {
+    mode: (np.array(rows, dtype=int), None, rows[0] < 3, rows[-1] >= 3)
+    for mode, rows in MODE_ROWS.items()
+}
+
+
+def solve(
+    robot: RobotModel,
+    frame: str,
+    target: pin.SE3,
+    *,
+    mode: Mode = "pose",
+    weights: np.ndarray | None = None,
+    seed: np.ndarray | None = None,
+    tolerance: tuple[float, float] = DEFAULT_TOLERANCE,
+    timeout_ms: float = DEFAULT_TIMEOUT_MS,
+    max_iterations: int | None = None,
+    num_solutions: int = 1,
+    accept: Callable[[np.ndarray], bool] | None = None,
+    analytic: bool = True,
+    rng: np.random.Generator | None = None,
+) -> IKResult:
+    """Joint configurations placing ``frame`` at ``target``.
+
+    Parameters
+    ----------
+    robot, frame
+        The robot and the frame to place (any named frame).
+    target
+        Desired placement of the frame in the root (world) frame.
+    mode
+        ``pose`` (6-D), ``position`` (orientation free) or ``orientation`` (position free).
+    weights
+        Optional non-negative weights of the six error components [e_p; e_R] (target-frame
+        axes). A zero weight frees that component; tolerances are checked only on the
+        components with positive weight, position and orientation separately.
+    seed
+        Wire configuration to start from (default: middle of the joint limits). Joints that do
+        not support ``frame`` keep their seed value in every answer.
+    tolerance
+        (position m, orientation rad): success when ‖e_p‖ and ‖e_R‖ (over the checked
+        components) are within them.
+    timeout_ms, max_iterations
+        Budget (``time.perf_counter``) and optional cap on Jacobian evaluations.
+    num_solutions
+        How many distinct solutions to collect; they come back sorted by their distance to
+        the seed. The search stops early once this many are found.
+    accept
+        Optional predicate on a converged wire configuration; a rejected solution is dropped
+        and the search continues (e.g. collision-aware IK).
+    analytic
+        Try closed forms (:mod:`app.kinematics.analytic_ik`) first where the chain admits one.
+    rng
+        Random generator for restarts (default: a fixed seed, so answers are reproducible).
+
+    Returns
+    -------
+    IKResult
+        ``success`` when at least one verified solution was found. Otherwise ``q`` is the
+        lowest-error configuration met and ``status`` says whether the time budget
+        (``timeout``) or the iteration cap (``not_converged``) ended the search.
+    """
+    t_start = time.perf_counter()
+    if mode not in MODE_ROWS:
+        raise InvalidInputError(f"unknown mode {mode!r}; use one of {', '.join(MODES)}", "mode")
+    if num_solutions < 1:
+        raise InvalidInputError("must be at least 1", "num_solutions")
+    if not timeout_ms > 0.0:
+        raise InvalidInputError("must be positive", "timeout_ms")
+    if max_iterations is not None and max_iterations < 1:
+        raise InvalidInputError("must be at least 1", "max_iterations")
+    tol_p, tol_r = float(tolerance[0]), float(tolerance[1])
+    if not (tol_p > 0.0 and tol_r > 0.0):
+        raise InvalidInputError("tolerances must be positive", "tolerance")
+    if weights is not None:
+        w = np.asarray(weights, dtype=float)
+        if w.shape != (6,) or not np.all(np.isfinite(w)) or np.any(w < 0.0):
+            raise InvalidInputError("give 6 finite, non-negative weights", "weights")
+    ch = chain(robot, frame)
+    q_seed = robot.mid_range() if seed is None else np.array(seed, dtype=float)
+    if q_seed.shape != (robot.n,):
+        raise InvalidInputError(f"expected {robot.n} values", "seed")
+    rows, sw, check_pos, check_rot = _task(mode, weights)
+    deadline = t_start + timeout_ms * 1e-3
+    search = _Search(robot, ch, target, q_seed, rows, sw, check_pos, check_rot, tol_p, tol_r)
+    search.accept = accept
+    search.wanted = num_solutions
+
+    method = "numeric"
+    if analytic:
+        from app.kinematics.analytic_ik import candidates
+
+        cands = candidates(robot, ch, target, mode, q_seed)
+        if cands is not None:
+            method = "analytic"
+            for qa in cands:
+                search.offer(qa)
+                if search.done():
+                    break
+    if not search.done():
+        if method == "analytic":
+            method = "analytic+numeric"
+        search.rng = rng
+        search.run(deadline, max_iterations)
+    return search.result(method, t_start, deadline)
+
+
+class _Search:
+    """State of one IK query: the hot loop, the verified solutions, the best iterate."""
+
+    def __init__(
+        self,
+        robot: RobotModel,
+        ch: Chain,
+        target: pin.SE3,
+        q_seed: np.ndarray,
+        rows: np.ndarray,
+        sw: np.ndarray | None,
+        check_pos: bool,
+        check_rot: bool,
+        tol_p: float,
+        tol_r: float,
+    ) -> None:
+        self.robot, self.ch, self.target = robot, ch, target
+        self.q_seed = q_seed
+        self.rows, self.sw = rows, sw
+        self.full_pose = rows.size == 6 and sw is None
+        self.check_pos, self.check_rot = check_pos, check_rot
+        self.tol_p, self.tol_r = tol_p, tol_r
+        self.accept: Callable[[np.ndarray], bool] | None = None
+        self.wanted = 1
+        self.solutions: list[IKSolution] = []
+        self.iterations = 0
+        self.restarts = 0
+        self.timed_out = False
+        self.rng: np.random.Generator | None = None
+        # Best unconverged iterate (weighted task error energy).
+        self.best_energy = math.inf
+        self.best_q = q_seed.copy()
+
+    # --------------------------------------------------------------- verification
+    def done(self) -> bool:
+        return len(self.solutions) >= self.wanted
+
+    def wire(self, qa: np.ndarray) -> np.ndarray:
+        """Full wire configuration: the seed with the active joints replaced."""
+        q = self.q_seed.copy()
+        q[self.ch.active] = qa
+        return q
+
+    def offer(self, qa: np.ndarray) -> bool:
+        """Verify a candidate (active joints) by FK, limits and ``accept``; keep if new."""
+        robot = self.robot
+        q = self.wire(qa)
+        if robot.has_continuous:
+            c = robot._cont_wire
+            q[c] = wrap_angle(q[c])
+        if (q < robot.lower).any() or (q > robot.upper).any():
+            return False
+        model, data = robot.model, robot.data
+        pin.forwardKinematics(model, data, robot.to_pin(q))
+        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        ep_full, er_full, e = pose_errors(T, self.target)
+        if self.full_pose:
+            ep, er, energy = ep_full, er_full, ep_full**2 + er_full**2
+        else:
+            ep, er = self._checked(e)
+            energy = self._energy(e)
+        if energy < self.best_energy:
+            self.best_energy, self.best_q = energy, q
+        if ep > self.tol_p or er > self.tol_r:
+            return False
+        for s in self.solutions:
+            if joint_distance(robot, s.q, q).max() <= DISTINCT:
+                return False
+        if self.accept is not None and not self.accept(q):
+            return False
+        self.solutions.append(IKSolution(q, ep_full, er_full))
+        return True
+
+    def _checked(self, e: np.ndarray) -> tuple[float, float]:
+        """Position and orientation errors over the checked (positive-weight) rows."""
+        r = self.rows
+        ep = float(np.linalg.norm(e[r[r < 3]])) if self.check_pos else 0.0
+        er = float(np.linalg.norm(e[r[r >= 3]])) if self.check_rot else 0.0
+        return ep, er
+
+    def _energy(self, e: np.ndarray) -> float:
+        v = e[self.rows]
+        if self.sw is not None:
+            v = v * self.sw
+        return float(v @ v)
+
+    # ------------------------------------------------------------------- hot loop
+    def run(self, deadline: float, max_iterations: int | None) -> None:
+        """Damped least squares from the seed, then from random restarts, until done."""
+        robot, ch = self.robot, self.ch
+        model, data = robot.model, robot.data
+        fid, cols = ch.frame_id, ch.cols
+        lo, hi = ch.clip_lo, ch.clip_hi
+        Rt = self.target.rotation
+        RtT = np.ascontiguousarray(Rt.T)
+        pt = self.target.translation
+        rows, sw = self.rows, self.sw
+        full_pose = rows.size == 6 and sw is None
+        m = rows.size
+        eye = np.eye(m)
+        redundant = ch.k > m
+        q_ref = self.q_seed[ch.active]
+        tol_p2, tol_r2 = self.tol_p**2, self.tol_r**2
+        check_pos, check_rot = self.check_pos, self.check_rot
+        rows_p, rows_r = rows[rows < 3], rows[rows >= 3]
+        plain, plain_q = ch.plain, ch.plain_q
+        all_plain = plain.size == ch.k
+        has_cont = ch.has_continuous
+        cont, cont_q, cont_q1 = ch.cont, ch.cont_q, ch.cont_q1
+        perf = time.perf_counter
+        cjj, gfj, upd, log3, jlog3 = (
+            pin.computeJointJacobians,
+            pin.getFrameJacobian,
+            pin.updateFramePlacement,
+            pin.log3,
+            pin.Jlog3,
+        )
+        LWA = pin.LOCAL_WORLD_ALIGNED
+        posv = _posv
+        mu, damp, gain = _MU, _DAMP, _NULL_GAIN
+        max_step = _MAX_STEP
+        max_step2 = max_step * max_step
+        null_scale = 1.0 / _NULL_ENERGY
+        redundant = redundant and gain > 0.0
+        stall_limit, attempt_cap = _STALL, _ATTEMPT_CAP
+        if np.array_equal(cols, np.arange(cols[0], cols[0] + cols.size)):
+            cols = slice(int(cols[0]), int(cols[0]) + cols.size)  # a view, not a copy
+        cap = max_iterations if max_iterations is not None else 1 << 62
+
+        qp = robot.to_pin(self.q_seed)
+        qa = q_ref.copy()
+        e = np.empty(6)
+        Je = np.empty((6, ch.k))
+        jv, jw = Je[:3], Je[3:]
+        attempt_iters = 0
+        best_attempt = math.inf
+        stall = 0
+        it = self.iterations
+        try:
+            while True:
+                if it >= cap:
+                    return
+                if perf() >= deadline:
+                    self.timed_out = True
+                    return
+                # ---- kinematics at qa
+                if all_plain:
+                    qp[plain_q] = qa
+                else:
+                    qp[plain_q] = qa[plain]
+                    th = qa[cont]
+                    qp[cont_q] = np.cos(th)
+                    qp[cont_q1] = np.sin(th)
+                cjj(model, data, qp)
+                T = upd(model, data, fid)
+                it += 1
+                attempt_iters += 1
+                # e = [p − p_t; log3(R R_tᵀ)] in world axes
+                Re = T.rotation @ RtT
+                ep = T.translation - pt
+                eR = log3(Re)
+                ep2 = ep @ ep
+                er2 = eR @ eR
+                e[:3] = ep
+                e[3:] = eR
+                # ---- converged on the checked components?
+                if full_pose:
+                    energy = ep2 + er2
+                    conv = ep2 <= tol_p2 and er2 <= tol_r2
+                else:
+                    conv = True
+                    if check_pos:
+                        v = e[rows_p]
+                        conv = v @ v <= tol_p2
+                    if conv and check_rot:
+                        v = e[rows_r]
+                        conv = v @ v <= tol_r2
+                    et = e[rows]
+                    if sw is not None:
+                        et = et * sw
+                    energy = et @ et
+                if conv:
+                    self.iterations = it
+                    if self.offer(qa.copy()) and self.done():
+                        return
+                    # Converged but rejected or a duplicate: jump elsewhere.
+                    qa = self._restart(self.rng)
+                    attempt_iters, best_attempt, stall = 0, math.inf, 0
+                    continue
+                # ---- stall / restart logic
+                if energy < self.best_energy:
+                    self.best_energy = energy
+                    self.best_q = self.wire(qa)
+                if energy < 0.81 * best_attempt:  # ‖e‖ decreased by 10 %
+                    best_attempt = energy
+                    stall = 0
+                else:
+                    stall += 1
+                    if stall >= stall_limit or attempt_iters >= attempt_cap:
+                        qa = self._restart(self.rng)
+                        attempt_iters, best_attempt, stall = 0, math.inf, 0
+                        continue
+                # ---- damped least-squares step on the task rows
+                J = gfj(model, data, fid, LWA)
+                jv[:] = J[:3, cols]
+                jw[:] = jlog3(Re).T @ J[3:, cols]
+                if full_pose:
+                    Jt, et = Je, e
+                else:
+                    Jt = Je[rows]
+                    if sw is not None:
+                        Jt = Jt * sw[:, None]
+                A = Jt @ Jt.T
+                A += (damp * energy + mu) * eye
+                if redundant:
+                    # Preference gain fades with the error (quadratic convergence kept).
+                    z = q_ref - qa
+                    z *= gain * min(1.0, energy * null_scale)
+                    dq = z - Jt.T @ posv(A, et + Jt @ z)[1]
+                else:
+                    dq = Jt.T @ posv(A, et)[1]
+                    dq *= -1.0
+                n2 = dq @ dq
+                if n2 > max_step2:
+                    dq *= max_step / math.sqrt(n2)
+                qa += dq
+                if has_cont:
+                    qa[cont] = (qa[cont] + math.pi) % _TWO_PI - math.pi
+                np.minimum(np.maximum(qa, lo, out=qa), hi, out=qa)
+        finally:
+            self.iterations = it
+
+    def _restart(self, rng: np.random.Generator | None) -> np.ndarray:
+        """A uniformly random configuration of the active joints (a TRAC-IK jump)."""
+        self.restarts += 1
+        if rng is None:
+            rng = self.rng = np.random.default_rng(_RNG_SEED)
+        return rng.uniform(self.ch.sample_lo, self.ch.sample_hi)
+
+    # ------------------------------------------------------------------- result
+    def result(self, method: str, t_start: float, deadline: float) -> IKResult:
+        robot = self.robot
+        sols = self.solutions
+        if len(sols) > 1:
+            sols = sorted(
+                sols, key=lambda s: float(np.linalg.norm(joint_distance(robot, s.q, self.q_seed)))
+            )
+        elapsed = (time.perf_counter() - t_start) * 1e3
+        if sols:
+            best = sols[0]
+            return IKResult(
+                True,
+                "converged",
+                best.q,
+                best.position_error,
+                best.orientation_error,
+                sols,
+                self.iterations,
+                self.restarts,
+                elapsed,
+                method,
+            )
+        q = self.best_q
+        if robot.has_continuous:
+            c = robot._cont_wire
+            q = q.copy()
+            q[c] = wrap_angle(q[c])
+        model, data = robot.model, robot.data
+        pin.forwardKinematics(model, data, robot.to_pin(q))
+        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        ep, er, _ = pose_errors(T, self.target)
+        status: Status = "timeout" if self.timed_out else "not_converged"
+        return IKResult(
+            False, status, q, ep, er, [], self.iterations, self.restarts, elapsed, method
+        )
