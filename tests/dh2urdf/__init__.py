@@ -1,0 +1,1 @@
+"""Tests of the dh2urdf package (DH table -> URDF)."""
