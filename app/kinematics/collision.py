@@ -57,6 +57,7 @@ The Pinocchio/coal models are immutable once built and cached per robot
 from __future__ import annotations
 
 import threading
+import warnings
 from collections import OrderedDict
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
@@ -234,6 +235,12 @@ class _Scratch:
         self.data = model.createData()
         self.geom_data = pin.GeometryData(gm)
         self.margin = 0.0
+        # Deterministic answers: no GJK warm start from the previous query, so a result
+        # never depends on what this thread checked before.
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            for req in (*self.geom_data.collisionRequests, *self.geom_data.distanceRequests):
+                req.enable_cached_gjk_guess = False
 
 
 class _Compiled:

@@ -358,3 +358,17 @@ def test_batch_matches_single_checks(registry) -> None:
     batch = cm.check_batch(qs)
     assert [r.in_collision for r in batch] == [cm.check(q).in_collision for q in qs]
     assert [r.in_collision for r in batch] == [False, True, False]
+
+
+def test_answers_do_not_depend_on_history(registry) -> None:
+    """No GJK warm start: the same query gives bit-identical distances whatever came before."""
+    panda = registry.get("panda")
+    obstacles = parse_obstacles(
+        [{"name": "post", "shape": "cylinder", "radius": 0.05, "length": 1.0}]
+    )
+    cm = collision_model(panda, "mesh")
+    q = np.array(READY)
+    first = [(p.a, p.b, p.distance) for p in cm.check(q, obstacles, distances=True).pairs]
+    cm.check(np.array(FOLDED), obstacles, distances=True)
+    again = [(p.a, p.b, p.distance) for p in cm.check(q, obstacles, distances=True).pairs]
+    assert first == again
