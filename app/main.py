@@ -1,14 +1,31 @@
-"""The ASGI application: ``uvicorn app.main:app``."""
+"""The ASGI application: ``python -m app`` (or ``uvicorn app.main:app``).
+
+Importing this module reads the ``DENAVIT_*`` settings; a bad value exits with one line
+naming the variable (see :mod:`app.settings`).
+
+Middleware, outermost first (all pure ASGI, see docs/deployment.md):
+
+1. :class:`~app.observability.ObservabilityMiddleware` — request id, metrics, access log;
+2. CORS, only when ``DENAVIT_CORS_ORIGINS`` is set;
+3. :class:`~app.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``.
+"""
 
 from __future__ import annotations
 
+import logging
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
 from fastapi import FastAPI
+from starlette.middleware.cors import CORSMiddleware
 
 from app import api
-from app.api import errors
-from app.api.common import EXTRA_SCHEMAS
+from app.api import errors, metrics
+from app.body_limit import BodyLimitMiddleware
+from app.observability import ObservabilityMiddleware, configure_logging
 from app.registry import Registry
 from app.settings import Settings, get_settings
+from app.store import remove_stale_temporaries
 
 DESCRIPTION = """\
 Kinematics of robot arms over HTTP: forward kinematics, Jacobians, inverse kinematics,
@@ -19,35 +36,61 @@ poses in the robot's root frame; configurations in the joint order of GET /robot
 (continuous joints as one angle); errors as RFC 9457 problem details.
 """
 
+log = logging.getLogger("denavit")
+
+
+@asynccontextmanager
+async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+    """Start-up: JSON logging, data directory ready; shutdown: a last log line.
+
+    In-flight requests are finished by uvicorn before shutdown runs (SIGTERM, up to
+    ``DENAVIT_GRACEFUL_TIMEOUT_S``).
+    """
+    settings: Settings = app.state.settings
+    configure_logging(settings.log_level)
+    try:
+        settings.data_dir.mkdir(parents=True, exist_ok=True)
+        removed = remove_stale_temporaries(settings.data_dir)
+    except OSError as exc:  # /ready reports it; reads keep working
+        log.error("data directory %s is unusable: %s", settings.data_dir, exc)
+        removed = 0
+    log.info(
+        "denavit started",
+        extra={
+            "data_dir": str(settings.data_dir),
+            "write_protection": settings.api_token is not None,
+            "cors_origins": settings.cors_origins,
+            "max_body_bytes": settings.max_body_bytes,
+            "stale_temporaries_removed": removed,
+        },
+    )
+    yield
+    log.info("denavit stopped")
+
 
 def create_app(settings: Settings | None = None) -> FastAPI:
     """Build the application (robots are loaded lazily, on first use)."""
     settings = settings or get_settings()
-    app = FastAPI(title="Denavit", version="0.1.0", description=DESCRIPTION)
+    app = FastAPI(title="Denavit", version="0.1.0", description=DESCRIPTION, lifespan=lifespan)
     app.state.settings = settings
     app.state.registry = Registry(settings.data_dir)
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)
-    _document_self_decoded_bodies(app)
+    app.include_router(metrics.router)
+    # add_middleware puts each new one outside the previous ones.
+    app.add_middleware(BodyLimitMiddleware, max_body_bytes=settings.max_body_bytes)
+    if settings.cors_origins:
+        app.add_middleware(
+            CORSMiddleware,
+            allow_origins=settings.cors_origins,
+            allow_methods=["GET", "POST", "PUT", "PATCH", "DELETE"],
+            allow_headers=["Authorization", "Content-Type", "X-Request-ID"],
+            expose_headers=["X-Request-ID"],
+            max_age=600,
+        )
+    app.add_middleware(ObservabilityMiddleware, access_log=settings.access_log)
     return app
-
-
-def _document_self_decoded_bodies(app: FastAPI) -> None:
-    """Add the request models of routes that decode their own bodies to the schema."""
-    build = app.openapi
-
-    def openapi() -> dict:
-        if app.openapi_schema is None:
-            schema = build()  # FastAPI caches it in app.openapi_schema
-            components = schema.setdefault("components", {}).setdefault("schemas", {})
-            for model in EXTRA_SCHEMAS:
-                defs = model.model_json_schema(ref_template="#/components/schemas/{model}")
-                components.update(defs.pop("$defs", {}))
-                components[model.__name__] = defs
-        return app.openapi_schema
-
-    app.openapi = openapi
 
 
 app = create_app()

@@ -1,43 +1,150 @@
-"""Configuration from ``DENAVIT_*`` environment variables, in one place."""
+"""Configuration from ``DENAVIT_*`` environment variables, in one place.
+
+Every field of :class:`Settings` reads ``DENAVIT_<FIELD>`` (case-insensitive). Values are
+validated when the process starts: a bad value stops the service with one line naming the
+variable (:func:`get_settings` raises ``SystemExit``), never a traceback.
+
+``DENAVIT_CORS_ORIGINS`` is a comma-separated list (``https://a.example,https://b.example``)
+or a JSON list; empty (the default) turns CORS off.
+"""
 
 from __future__ import annotations
 
+import ipaddress
+import re
 from functools import lru_cache
 from pathlib import Path
+from typing import Annotated
 
-from pydantic import Field, field_validator
-from pydantic_settings import BaseSettings, SettingsConfigDict
+import orjson
+from pydantic import Field, ValidationError, field_validator
+from pydantic_settings import BaseSettings, NoDecode, SettingsConfigDict
+
+ENV_PREFIX = "DENAVIT_"
+
+_LABEL = r"[A-Za-z0-9]([A-Za-z0-9-]{0,61}[A-Za-z0-9])?"
+_HOSTNAME = re.compile(rf"^(?=.{{1,253}}$){_LABEL}(\.{_LABEL})*$")
+_ORIGIN = re.compile(r"^https?://[^\s/?#]+$")
+_TOKEN = re.compile(r"^[\x21-\x7e]+$")
 
 
 class Settings(BaseSettings):
     """Service settings; every field reads ``DENAVIT_<NAME>`` from the environment."""
 
-    model_config = SettingsConfigDict(env_prefix="DENAVIT_", extra="ignore")
+    model_config = SettingsConfigDict(env_prefix=ENV_PREFIX, extra="ignore")
 
-    host: str = Field("127.0.0.1", description="Address uvicorn binds to.")
+    host: str = Field("127.0.0.1", description="Address uvicorn binds to (IP or host name).")
     port: int = Field(8000, ge=1, le=65535, description="TCP port.")
     workers: int = Field(1, ge=1, le=256, description="Number of uvicorn worker processes.")
     data_dir: Path = Field(Path("data"), description="Directory of user-added robots and maps.")
     log_level: str = Field("info", description="Logging level: debug, info, warning, error.")
+    access_log: bool = Field(True, description="One JSON log line per request.")
     api_token: str | None = Field(None, description="Bearer token required on write endpoints.")
-    cors_origins: list[str] = Field(default_factory=list, description="Allowed CORS origins.")
+    cors_origins: Annotated[list[str], NoDecode] = Field(
+        default_factory=list, description="Allowed CORS origins (comma-separated); empty = off."
+    )
     max_body_bytes: int = Field(64 * 1024 * 1024, ge=1024, description="Largest request body.")
     max_upload_bytes: int = Field(
         5 * 1024 * 1024, ge=1024, description="Largest robot upload (POST /robots/urdf, /dh)."
     )
     max_batch: int = Field(100_000, ge=1, description="Largest batch (configurations, targets).")
     ik_max_timeout_ms: float = Field(1000.0, gt=0, description="Cap on an IK request's budget.")
+    graceful_timeout_s: int = Field(
+        8,
+        ge=0,
+        le=3600,
+        description="On SIGTERM, how long in-flight requests may take to finish (s).",
+    )
+
+    @field_validator("host")
+    @classmethod
+    def _host(cls, value: str) -> str:
+        value = value.strip()
+        try:
+            ipaddress.ip_address(value)
+        except ValueError:
+            if not _HOSTNAME.match(value):
+                raise ValueError("must be an IP address or a host name") from None
+        return value
 
     @field_validator("log_level")
     @classmethod
     def _level(cls, value: str) -> str:
-        value = value.lower()
+        value = value.strip().lower()
         if value not in {"critical", "error", "warning", "info", "debug"}:
             raise ValueError("must be one of critical, error, warning, info, debug")
         return value
 
+    @field_validator("data_dir")
+    @classmethod
+    def _data_dir(cls, value: Path) -> Path:
+        if not str(value).strip():
+            raise ValueError("must not be empty")
+        if value.exists() and not value.is_dir():
+            raise ValueError(f"{value} exists and is not a directory")
+        return value
+
+    @field_validator("api_token", mode="before")
+    @classmethod
+    def _token(cls, value: object) -> object:
+        if isinstance(value, str):
+            value = value.strip()
+            if not value:
+                return None  # an empty variable means "no token"
+            if not _TOKEN.match(value):
+                raise ValueError("must be printable ASCII without spaces")
+        return value
+
+    @field_validator("cors_origins", mode="before")
+    @classmethod
+    def _origins(cls, value: object) -> object:
+        if isinstance(value, str):
+            text = value.strip()
+            if text.startswith("["):
+                try:
+                    value = orjson.loads(text)
+                except orjson.JSONDecodeError as exc:
+                    raise ValueError(f"not a JSON list ({exc})") from None
+            else:
+                value = [part.strip() for part in text.split(",") if part.strip()]
+        if isinstance(value, list):
+            for origin in value:
+                if not isinstance(origin, str) or not (origin == "*" or _ORIGIN.match(origin)):
+                    raise ValueError(
+                        f"{origin!r} is not an origin like https://example.org (or '*')"
+                    )
+            value = [o.rstrip("/") for o in value]
+        return value
+
+
+class SettingsError(ValueError):
+    """A ``DENAVIT_*`` variable has a bad value; the message is one line naming it."""
+
+
+def describe(exc: ValidationError) -> str:
+    """One line naming every bad variable: ``DENAVIT_PORT='abc': Input should be ...``."""
+    parts = []
+    for err in exc.errors():
+        name = ENV_PREFIX + "_".join(str(p) for p in err["loc"][:1]).upper()
+        value = err.get("input")
+        shown = f"={value!r}" if isinstance(value, str | int | float) else ""
+        message = str(err["msg"]).removeprefix("Value error, ")
+        parts.append(f"{name}{shown}: {message}")
+    return "invalid settings: " + "; ".join(parts)
+
+
+def load_settings(**overrides: object) -> Settings:
+    """Read the settings from the environment; raises :class:`SettingsError` (one line)."""
+    try:
+        return Settings(**overrides)
+    except ValidationError as exc:
+        raise SettingsError(describe(exc)) from None
+
 
 @lru_cache
 def get_settings() -> Settings:
-    """The process-wide settings, read once."""
-    return Settings()
+    """The process-wide settings, read once; a bad variable exits with a one-line message."""
+    try:
+        return load_settings()
+    except SettingsError as exc:
+        raise SystemExit(f"denavit: {exc}") from None

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import contextvars
 import functools
 import json
 import os
@@ -138,7 +139,8 @@ def pool() -> ThreadPoolExecutor:
 async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
     """Run ``fn(*args, **kwargs)`` in the bounded pool and await its result."""
     loop = asyncio.get_running_loop()
-    return await loop.run_in_executor(pool(), functools.partial(fn, *args, **kwargs))
+    context = contextvars.copy_context()  # the request id follows into the pool's logs
+    return await loop.run_in_executor(pool(), context.run, functools.partial(fn, *args, **kwargs))
 
 
 def parse_json(raw: bytes) -> Any:
