@@ -89,7 +89,14 @@ async def compute_velocity(
     out = {"robot_id": robot.id, "frame": frame, "reference": body.reference, "q": q}
     if body.joint_velocities is not None:
         twist = forward_velocity(robot, q, body.joint_velocities, frame, body.reference)
-        out |= {"direction": "forward", "joint_velocities": body.joint_velocities, "twist": twist}
+        out |= {
+            "direction": "forward",
+            "joint_velocities": body.joint_velocities,
+            "twist": twist,
+            "residual": None,
+            "damping": None,
+            "sigma_min": None,
+        }
     else:
         inv = inverse_velocity(
             robot,

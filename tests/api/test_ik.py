@@ -1,0 +1,189 @@
+"""POST /robots/{id}/ik and /ik/batch: answers checked by FK, and the error contract."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from app.kinematics.fk import forward_kinematics
+from app.kinematics.rotations import matrix_to_quaternion
+
+Q_UR5 = [0.3, -1.0, 1.2, 0.2, 0.5, 0.1]
+GOOD_TARGET = {"position": [0.3, 0.2, 0.4], "orientation": [0.0, 0.0, 0.0, 1.0]}
+
+
+def problem(resp, status: int, field: str) -> dict:
+    assert resp.status_code == status, resp.text
+    assert resp.headers["content-type"].startswith("application/problem+json")
+    body = resp.json()
+    assert body["status"] == status and body["field"] == field, body
+    return body
+
+
+def ur5_target(registry, q=Q_UR5) -> dict:
+    T = forward_kinematics(registry.get("ur5"), np.array(q), ["tool0"])["tool0"]
+    return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}
+
+
+def check_pose(registry, q, target, frame="tool0", robot_id="ur5", tol=1e-5) -> None:
+    """FK of ``q`` reaches ``target`` (computed here, independently of the response)."""
+    T = forward_kinematics(registry.get(robot_id), np.array(q), [frame])[frame]
+    assert np.linalg.norm(T[:3, 3] - np.array(target["position"])) <= tol
+    qt = np.array(target["orientation"])
+    qa = matrix_to_quaternion(T[:3, :3])
+    assert 2 * math.acos(min(1.0, abs(float(qa @ qt)))) <= tol
+
+
+def test_solve_pose(client, registry) -> None:
+    target = ur5_target(registry)
+    r = client.post("/robots/ur5/ik", json={"target": target})
+    assert r.status_code == 200, r.text
+    body = r.json()
+    assert body["success"] and body["status"] == "converged"
+    assert body["position_error"] <= 1e-5 and body["orientation_error"] <= 1e-5
+    assert list(body["joint_positions"]) == registry.get("ur5").joint_names
+    assert list(body["joint_positions"].values()) == body["q"]
+    assert body["solutions"][0]["q"] == body["q"]
+    assert body["iterations"] >= 1 and body["solve_time_ms"] >= 0.0
+    check_pose(registry, body["q"], target)
+
+
+def test_solve_matrix_and_several_solutions(client, registry) -> None:
+    T = forward_kinematics(registry.get("ur5"), np.array(Q_UR5), ["tool0"])["tool0"]
+    body = {"target": {"matrix": T.tolist()}, "num_solutions": 3, "timeout_ms": 500}
+    r = client.post("/robots/ur5/ik", json=body)
+    assert r.status_code == 200, r.text
+    out = r.json()
+    assert out["success"] and 2 <= len(out["solutions"]) <= 3
+    target = ur5_target(registry)
+    for s in out["solutions"]:
+        check_pose(registry, s["q"], target)
+
+
+def test_planar2_both_elbows_over_http(client) -> None:
+    body = {"target": {"position": [1.2, 0.7, 0.0]}, "mode": "position", "num_solutions": 2}
+    out = client.post("/robots/planar2/ik", json=body).json()
+    assert out["success"] and out["method"] == "analytic"
+    elbows = sorted(round(s["q"][1], 9) for s in out["solutions"])
+    c2 = (1.2**2 + 0.7**2 - 1.0 - 0.64) / (2 * 0.8)
+    assert elbows == [round(-math.acos(c2), 9), round(math.acos(c2), 9)]
+
+
+def test_unreachable_is_200_with_success_false(client) -> None:
+    body = {"target": {"position": [3.0, 0.0, 0.5], "orientation": [0, 0, 0, 1]}, "timeout_ms": 5}
+    r = client.post("/robots/ur5/ik", json=body)
+    assert r.status_code == 200
+    out = r.json()
+    assert not out["success"] and out["status"] in {"timeout", "not_converged"}
+    assert out["solutions"] == [] and out["position_error"] > 2.0
+    assert len(out["q"]) == 6
+
+
+def test_seed_as_map_and_frame(client, registry) -> None:
+    target = ur5_target(registry)
+    seed = {"shoulder_pan_joint": 0.3, "elbow_joint": 1.2}
+    body = {"target": target, "seed": seed, "frame": "tool0", "timeout_ms": 50}
+    out = client.post("/robots/ur5/ik", json=body).json()
+    assert out["success"] and out["frame"] == "tool0"
+
+
+def test_large_budget_runs_in_the_pool(client, registry) -> None:
+    body = {"target": ur5_target(registry), "timeout_ms": 100, "max_iterations": 1000}
+    out = client.post("/robots/ur5/ik", json=body).json()
+    assert out["success"]
+
+
+def test_batch_chained_and_from_one_seed(client, registry) -> None:
+    qs = [np.array(Q_UR5) + 0.05 * k for k in range(5)]
+    targets = [ur5_target(registry, q) for q in qs]
+    for chain in (True, False):
+        r = client.post("/robots/ur5/ik/batch", json={"targets": targets, "chain_seeds": chain})
+        assert r.status_code == 200, r.text
+        out = r.json()
+        assert out["solved"] == 5 and len(out["results"]) == 5
+        for res, t in zip(out["results"], targets, strict=True):
+            assert res["success"]
+            check_pose(registry, res["q"], t)
+    # Chained seeds follow the trajectory's branch: consecutive answers stay close.
+    out = client.post("/robots/ur5/ik/batch", json={"targets": targets, "seed": Q_UR5}).json()
+    qs_out = np.array([r["q"] for r in out["results"]])
+    assert np.abs(np.diff(qs_out, axis=0)).max() < 0.2
+
+
+def test_batch_limit(client, app, registry) -> None:
+    app.state.settings.max_batch = 2
+    r = client.post("/robots/ur5/ik/batch", json={"targets": [ur5_target(registry)] * 3})
+    problem(r, 422, "targets")
+
+
+BAD = [
+    ({"target": {"position": [0, 0, 0], "orientation": [0, 0, 0, 0]}}, 422, "target.orientation"),
+    ({"target": {"position": [0, 0, 0], "orientation": [0, 0, 0, 2]}}, 422, "target.orientation"),
+    ({"target": {"orientation": [0, 0, 0, 1]}}, 422, "target.position"),
+    ({"target": {"position": [0, 0, 0]}}, 422, "target.orientation"),
+    ({"target": {**GOOD_TARGET, "matrix": np.eye(4).tolist()}}, 422, "target"),
+    ({"target": {"matrix": (2 * np.eye(4)).tolist()}}, 422, "target.matrix"),
+    (
+        {"target": {"matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]}},
+        422,
+        "target.matrix",
+    ),
+    (
+        {"target": {"matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]}},
+        422,
+        "target.matrix",
+    ),
+    ({"target": GOOD_TARGET, "frame": "tool9"}, 404, "frame"),
+    ({"target": GOOD_TARGET, "timeout_ms": -1}, 422, "timeout_ms"),
+    ({"target": GOOD_TARGET, "timeout_ms": 0}, 422, "timeout_ms"),
+    ({"target": GOOD_TARGET, "timeout_ms": 5000}, 422, "timeout_ms"),
+    ({"target": GOOD_TARGET, "max_iterations": -3}, 422, "max_iterations"),
+    ({"target": GOOD_TARGET, "num_solutions": 0}, 422, "num_solutions"),
+    ({"target": GOOD_TARGET, "seed": [0, 0]}, 422, "seed"),
+    ({"target": GOOD_TARGET, "seed": {"wrist_9_joint": 0.1}}, 404, "seed.wrist_9_joint"),
+    ({"target": GOOD_TARGET, "mode": "twist"}, 422, "mode"),
+    ({"target": GOOD_TARGET, "weights": [1, 1, 1, 1, 1]}, 422, "weights"),
+    ({"target": GOOD_TARGET, "weights": [1, 1, 1, 1, 1, -1]}, 422, "weights.5"),
+    ({"target": GOOD_TARGET, "weights": [1, 1, 1, 0, 0, 0], "mode": "orientation"}, 422, "weights"),
+    ({"target": GOOD_TARGET, "tolerance": {"position": -1e-5}}, 422, "tolerance.position"),
+    ({"target": GOOD_TARGET, "bogus": 1}, 422, "bogus"),
+    ({}, 422, "target"),
+]
+
+
+@pytest.mark.parametrize(("body", "status", "field"), BAD)
+def test_bad_inputs(client, body, status, field) -> None:
+    problem(client.post("/robots/ur5/ik", json=body), status, field)
+
+
+@pytest.mark.parametrize(
+    ("raw", "field"),
+    [
+        ('{"target": {"position": [0, 0, NaN], "orientation": [0, 0, 0, 1]}}', "target.position.2"),
+        (
+            '{"target": {"position": [0, 0, 0], "orientation": [0, 0, 0, 1]}, "seed": [0, 0, 0, '
+            "0, 0, Infinity]}",
+            "seed",
+        ),
+    ],
+)
+def test_non_finite_numbers(client, raw, field) -> None:
+    r = client.post("/robots/ur5/ik", content=raw, headers={"content-type": "application/json"})
+    assert r.status_code == 422, r.text
+    assert r.json()["field"].startswith(field)
+
+
+def test_batch_bad_target_names_its_index(client) -> None:
+    body = {"targets": [GOOD_TARGET, {"position": [0, 0, 0], "orientation": [0, 0, 0, 0]}]}
+    problem(client.post("/robots/ur5/ik/batch", json=body), 422, "targets.1.orientation")
+
+
+def test_unknown_robot(client) -> None:
+    problem(client.post("/robots/nope/ik", json={"target": GOOD_TARGET}), 404, "robot_id")
+
+
+def test_malformed_json(client) -> None:
+    r = client.post("/robots/ur5/ik", content="{", headers={"content-type": "application/json"})
+    assert r.status_code == 400

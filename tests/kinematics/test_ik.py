@@ -1,0 +1,336 @@
+"""Inverse kinematics against independent references.
+
+Solutions are checked with yourdfpy's forward kinematics (not Pinocchio's), joint limits
+with the URDF's numbers, and the planar 2-link arm against DOMAIN.md's closed form.
+Budgets are generous (tests run on loaded machines); speed is measured in bench/.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+
+import numpy as np
+import pinocchio as pin
+import pytest
+import yourdfpy
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from app.kinematics import ik
+from app.kinematics.analytic_ik import into_limits, planar2_geometry, planar2_solutions
+from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.models import RobotModel
+from app.kinematics.rotations import quaternion_to_matrix
+
+BUDGET_MS = 500.0
+TOL = 1e-5
+
+# (robot id, frame): the benchmark chains and a DH robot of the registry.
+CHAINS = [("panda", "panda_link8"), ("ur5", "tool0"), ("puma560", "tool")]
+
+
+def _urdf(robot: RobotModel) -> yourdfpy.URDF:
+    return robot.lazy(
+        "test.yourdfpy",
+        lambda r: yourdfpy.URDF.load(
+            io.BytesIO(r.urdf_text.encode()),
+            load_meshes=False,
+            build_collision_scene_graph=False,
+            load_collision_meshes=False,
+        ),
+    )
+
+
+def reference_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.ndarray:
+    """World pose of a link by yourdfpy (independent of Pinocchio)."""
+    urdf = _urdf(robot)
+    urdf.update_cfg(q)
+    return urdf.get_transform(frame, urdf.base_link)
+
+
+def pose_error(T: np.ndarray, target: np.ndarray) -> tuple[float, float]:
+    """Position distance and rotation angle between two 4×4 poses."""
+    dp = float(np.linalg.norm(T[:3, 3] - target[:3, 3]))
+    c = (np.trace(target[:3, :3].T @ T[:3, :3]) - 1.0) / 2.0
+    return dp, float(math.acos(min(1.0, max(-1.0, c))))
+
+
+def within_limits(robot: RobotModel, q: np.ndarray) -> bool:
+    return all(
+        j.continuous or (j.lower - 1e-12 <= v <= j.upper + 1e-12)
+        for j, v in zip(robot.joints, q, strict=True)
+    )
+
+
+def random_q(robot: RobotModel, rng: np.random.Generator) -> np.ndarray:
+    lo = np.where(np.isfinite(robot.lower), robot.lower, -np.pi)
+    hi = np.where(np.isfinite(robot.upper), robot.upper, np.pi)
+    return rng.uniform(lo, hi)
+
+
+def se3(T: np.ndarray) -> pin.SE3:
+    return pin.SE3(T[:3, :3].copy(), T[:3, 3].copy())
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), CHAINS)
+@settings(
+    max_examples=12,
+    deadline=None,
+    suppress_health_check=[HealthCheck.function_scoped_fixture],
+)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_reachable_targets_are_solved(registry, robot_id: str, frame: str, seed: int) -> None:
+    """FK(IK(FK(q))) matches the target within tolerance, inside the limits (property)."""
+    robot = registry.get(robot_id)
+    q_true = random_q(robot, np.random.default_rng(seed))
+    target = reference_pose(robot, q_true, frame)
+    res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS)
+    assert res.success, (res.status, res.position_error, res.orientation_error)
+    assert res.status == "converged"
+    for sol in res.solutions:
+        assert within_limits(robot, sol.q)
+        dp, dr = pose_error(reference_pose(robot, sol.q, frame), target)
+        assert dp <= TOL and dr <= TOL
+        assert sol.position_error == pytest.approx(dp, abs=1e-9)
+    # Joints that do not support the frame keep their seed (Panda's fingers).
+    still = np.setdiff1d(np.arange(robot.n), robot.supporting_joints(frame))
+    np.testing.assert_array_equal(res.q[still], robot.mid_range()[still])
+
+
+def test_several_distinct_solutions_sorted_by_seed_distance(registry) -> None:
+    robot = registry.get("ur5")
+    q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    target = reference_pose(robot, q_true, "tool0")
+    seed = q_true + 0.05
+    res = ik.solve(robot, "tool0", se3(target), seed=seed, num_solutions=4, timeout_ms=2000)
+    assert res.success and len(res.solutions) >= 2
+    dists = [np.linalg.norm(s.q - seed) for s in res.solutions]
+    assert dists == sorted(dists)
+    for a in range(len(res.solutions)):
+        for b in range(a):
+            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > ik.DISTINCT
+        dp, dr = pose_error(reference_pose(robot, res.solutions[a].q, "tool0"), target)
+        assert dp <= TOL and dr <= TOL
+
+
+# ------------------------------------------------------------------ planar 2-link closed form
+def _planar_closed_form(l1: float, l2: float, x: float, y: float) -> set[tuple[float, float]]:
+    """DOMAIN.md: c2 = (x² + y² − l1² − l2²)/(2 l1 l2), θ2 = ±acos c2."""
+    c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
+    out = set()
+    for t2 in (math.acos(c2), -math.acos(c2)):
+        t1 = math.atan2(y, x) - math.atan2(l2 * math.sin(t2), l1 + l2 * math.cos(t2))
+        out.add((round(into_limits(t1, -math.pi, math.pi, 0.0), 9), round(t2, 9)))
+    return out
+
+
+@pytest.mark.parametrize(("x", "y"), [(1.2, 0.7), (-0.4, 1.1), (0.3, -0.9), (1.75, 0.1)])
+def test_planar2_returns_both_elbow_solutions(registry, x: float, y: float) -> None:
+    robot = registry.get("planar2")  # DH: l1 = 1.0, l2 = 0.8, frame tool at the tip
+    target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
+    res = ik.solve(robot, robot.ee_frame, target, mode="position", num_solutions=2)
+    assert res.success and len(res.solutions) == 2
+    got = {(round(s.q[0], 9), round(s.q[1], 9)) for s in res.solutions}
+    assert got == _planar_closed_form(1.0, 0.8, x, y)
+    assert res.method == "analytic"
+
+
+def _tilted_planar_urdf() -> str:
+    """A planar 2-link arm whose axes are world y, lifted and offset, with a tool offset."""
+    return """<?xml version="1.0"?>
+<robot name="tilted2">
+  <link name="base"/><link name="l1"/><link name="l2"/><link name="tool"/>
+  <joint name="a" type="revolute"><parent link="base"/><child link="l1"/>
+    <origin xyz="0.1 0.2 0.5" rpy="0 0 0"/><axis xyz="0 1 0"/>
+    <limit lower="-3.2" upper="3.2" velocity="1" effort="1"/></joint>
+  <joint name="b" type="revolute"><parent link="l1"/><child link="l2"/>
+    <origin xyz="0.6 0.05 0" rpy="0 0 0"/><axis xyz="0 -1 0"/>
+    <limit lower="-3.2" upper="3.2" velocity="1" effort="1"/></joint>
+  <joint name="t" type="fixed"><parent link="l2"/><child link="tool"/>
+    <origin xyz="0.4 0 0.1" rpy="0 0 0"/></joint>
+</robot>"""
+
+
+def test_planar2_closed_form_in_a_general_placement() -> None:
+    """Parallel axes along ±y, offsets and a tool: two exact solutions, checked by yourdfpy."""
+    robot = RobotModel("tilted2", _tilted_planar_urdf(), ee_frame="tool")
+    q_true = np.array([0.7, -1.2])
+    target = reference_pose(robot, q_true, "tool")
+    res = ik.solve(robot, "tool", se3(target), mode="position", num_solutions=2)
+    assert res.method == "analytic" and len(res.solutions) == 2
+    assert any(np.allclose(s.q, q_true, atol=1e-9) for s in res.solutions)
+    for s in res.solutions:
+        assert np.linalg.norm(reference_pose(robot, s.q, "tool")[:3, 3] - target[:3, 3]) < 1e-12
+
+
+def test_planar2_solutions_unreachable_is_empty(registry) -> None:
+    robot = registry.get("planar2")
+    ee = robot.ee_frame
+    geo = planar2_geometry(robot, robot.supporting_joints(ee), robot.frame_id(ee))
+    assert geo is not None and geo.l1 == pytest.approx(1.0) and geo.l2 == pytest.approx(0.8)
+    assert planar2_solutions(geo, np.array([2.5, 0.0, 0.0])) == []
+    assert planar2_solutions(geo, np.array([0.1, 0.0, 0.0])) == []  # inside |l1 − l2|
+
+
+def test_into_limits() -> None:
+    assert into_limits(3.0 * math.pi / 2, -math.pi, math.pi, 0.0) == pytest.approx(-math.pi / 2)
+    assert into_limits(0.5, -2 * math.pi, 2 * math.pi, -5.0) == pytest.approx(0.5 - 2 * math.pi)
+    assert into_limits(0.5, -2 * math.pi, 2 * math.pi, 1.0) == pytest.approx(0.5)
+    assert into_limits(4.0, -math.inf, math.inf, 0.0) == pytest.approx(4.0 - 2 * math.pi)
+
+
+# ------------------------------------------------------------------------- failures, modes
+def test_target_outside_workspace_returns_best_effort(registry) -> None:
+    robot = registry.get("ur5")
+    target = pin.SE3(np.eye(3), np.array([3.0, 0.0, 0.5]))  # UR5 reach is ~0.85 m
+    res = ik.solve(robot, "tool0", target, timeout_ms=20.0)
+    assert not res.success and res.solutions == []
+    assert res.status == "timeout"
+    assert within_limits(robot, res.q)
+    dp, _ = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
+    assert res.position_error == pytest.approx(dp, abs=1e-9)
+    assert res.position_error > 2.0
+
+
+def test_iteration_cap_reports_not_converged(registry) -> None:
+    robot = registry.get("ur5")
+    target = pin.SE3(np.eye(3), np.array([3.0, 0.0, 0.5]))
+    res = ik.solve(robot, "tool0", target, timeout_ms=1000.0, max_iterations=25)
+    assert not res.success and res.status == "not_converged" and res.iterations == 25
+
+
+def test_planar2_unreachable_is_not_a_success(registry) -> None:
+    robot = registry.get("planar2")
+    target = pin.SE3(np.eye(3), np.array([2.5, 0.0, 0.0]))
+    res = ik.solve(robot, robot.ee_frame, target, mode="position", timeout_ms=10.0)
+    assert not res.success
+    # The best effort stretches towards the target: distance = 2.5 − (l1 + l2).
+    assert res.position_error == pytest.approx(0.7, abs=1e-3)
+
+
+@pytest.mark.parametrize("robot_id", ["rrp", "planar3r"])
+def test_position_mode_on_a_three_joint_arm(registry, robot_id: str) -> None:
+    robot = registry.get(robot_id)
+    rng = np.random.default_rng(7)
+    for _ in range(5):
+        q_true = random_q(robot, rng)
+        target = reference_pose(robot, q_true, robot.ee_frame)
+        goal = pin.SE3(np.eye(3), target[:3, 3].copy())  # orientation ignored
+        res = ik.solve(robot, robot.ee_frame, goal, mode="position", timeout_ms=BUDGET_MS)
+        assert res.success
+        T = reference_pose(robot, res.q, robot.ee_frame)
+        assert np.linalg.norm(T[:3, 3] - target[:3, 3]) <= TOL
+        assert within_limits(robot, res.q)
+
+
+def test_orientation_mode(registry) -> None:
+    robot = registry.get("ur5")
+    target = reference_pose(robot, np.array([0.1, -0.8, 1.0, 0.3, -0.7, 2.0]), "tool0")
+    goal = pin.SE3(target[:3, :3].copy(), np.array([9.0, 9.0, 9.0]))  # position ignored
+    res = ik.solve(robot, "tool0", goal, mode="orientation", timeout_ms=BUDGET_MS)
+    assert res.success
+    _, dr = pose_error(reference_pose(robot, res.q, "tool0"), target)
+    assert dr <= TOL
+
+
+def test_zero_weight_frees_a_component(registry) -> None:
+    """Weight 0 on ωz: any rotation about world z of the target is accepted."""
+    robot = registry.get("ur5")
+    target = reference_pose(robot, np.array([0.2, -1.0, 1.1, -0.4, 1.3, 0.0]), "tool0")
+    Rz = pin.rpy.rpyToMatrix(0.0, 0.0, 0.3)
+    goal = pin.SE3(Rz @ target[:3, :3], target[:3, 3].copy())
+    w = np.array([1, 1, 1, 1, 1, 0.0])
+    res = ik.solve(robot, "tool0", goal, weights=w, timeout_ms=BUDGET_MS)
+    assert res.success
+    T = reference_pose(robot, res.q, "tool0")
+    assert np.linalg.norm(T[:3, 3] - target[:3, 3]) <= TOL
+    # The tool z axis is world-z-rotation invariant only up to the free angle: check the
+    # constrained rotation components, log3(R R_tᵀ)[0:2] ≈ 0.
+    assert np.abs(pin.log3(T[:3, :3] @ goal.rotation.T)[:2]).max() <= TOL
+
+
+def test_continuous_joints_use_wire_angles(registry) -> None:
+    """Kinova: continuous joints come back as one angle in (−π, π], FK-verified."""
+    robot = registry.get("kinova")
+    frame = robot.ee_frame
+    cont = [j.index for j in robot.joints if j.continuous]
+    assert cont
+    rng = np.random.default_rng(3)
+    for _ in range(4):
+        q_true = random_q(robot, rng)
+        q_true[cont] += 2 * np.pi  # the same pose with angles beyond π
+        target = reference_pose(robot, q_true, frame)
+        res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS)
+        assert res.success
+        assert res.q.shape == (robot.n,)
+        assert np.all(np.abs(res.q[cont]) <= np.pi + 1e-12)
+        dp, dr = pose_error(reference_pose(robot, res.q, frame), target)
+        assert dp <= TOL and dr <= TOL
+
+
+def test_accept_predicate_rejects_solutions(registry) -> None:
+    """A rejecting predicate makes the solver look for another branch (shoulder sign)."""
+    robot = registry.get("ur5")
+    q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    target = se3(reference_pose(robot, q_true, "tool0"))
+    calls: list[np.ndarray] = []
+
+    def accept(q: np.ndarray) -> bool:
+        calls.append(q.copy())
+        return q[2] < 0.0  # elbow on the other side than q_true
+
+    res = ik.solve(robot, "tool0", target, seed=q_true, accept=accept, timeout_ms=2000)
+    assert calls and res.success and res.q[2] < 0.0
+    dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
+    assert dp <= TOL and dr <= TOL
+    never = ik.solve(robot, "tool0", target, accept=lambda q: False, timeout_ms=10.0)
+    assert not never.success and never.solutions == []
+
+
+def test_redundant_arm_stays_near_the_seed(registry) -> None:
+    """Panda from a seed next to a solution: the answer stays in that neighbourhood."""
+    robot = registry.get("panda")
+    q_true = robot.mid_range()
+    q_true[:7] = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5]
+    target = se3(reference_pose(robot, q_true, "panda_link8"))
+    res = ik.solve(robot, "panda_link8", target, seed=q_true + 0.02, timeout_ms=BUDGET_MS)
+    assert res.success and res.restarts == 0
+    assert np.abs(res.q - q_true).max() < 0.1
+
+
+def test_quaternion_target_matches_matrix(registry) -> None:
+    robot = registry.get("ur5")
+    quat = np.array([0.1, 0.7, -0.2, 0.67])
+    quat /= np.linalg.norm(quat)
+    R = quaternion_to_matrix(quat)
+    target = pin.SE3(R, np.array([0.3, 0.2, 0.4]))
+    res = ik.solve(robot, "tool0", target, timeout_ms=BUDGET_MS)
+    assert res.success
+    dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
+    assert dp <= TOL and dr <= TOL
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"mode": "twist"}, "mode"),
+        ({"num_solutions": 0}, "num_solutions"),
+        ({"timeout_ms": -1.0}, "timeout_ms"),
+        ({"max_iterations": 0}, "max_iterations"),
+        ({"tolerance": (0.0, 1e-5)}, "tolerance"),
+        ({"weights": np.array([1, 1, 1, 1, 1, -1.0])}, "weights"),
+        ({"weights": np.zeros(6)}, "weights"),
+        ({"seed": np.zeros(3)}, "seed"),
+    ],
+)
+def test_bad_arguments(registry, kwargs: dict, field: str) -> None:
+    robot = registry.get("ur5")
+    with pytest.raises(InvalidInputError) as err:
+        ik.solve(robot, "tool0", pin.SE3.Identity(), **kwargs)
+    assert err.value.field == field
+
+
+def test_unknown_frame(registry) -> None:
+    with pytest.raises(UnknownNameError):
+        ik.solve(registry.get("ur5"), "tool9", pin.SE3.Identity())
