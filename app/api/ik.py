@@ -23,7 +23,9 @@ from app.api.common import (
     registry,
 )
 from app.api.errors import ERROR_RESPONSES
+from app.api.scenes import ObstacleIn, resolve_obstacles, scene_store
 from app.kinematics import ik
+from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
@@ -87,6 +89,24 @@ class IKOptions(Schema):
     )
     max_iterations: int | None = Field(
         None, ge=1, le=10_000_000, description="Cap on solver iterations (Jacobian evaluations)."
+    )
+    avoid_collisions: bool = Field(
+        False,
+        strict=True,
+        description="Return only solutions free of self-collision and of collision with "
+        "`obstacles` / `scene` (other branches and restarts are searched within the budget).",
+    )
+    obstacles: list[ObstacleIn] | None = Field(
+        None, max_length=1000, description="With avoid_collisions: obstacles (root frame)."
+    )
+    scene: str | None = Field(
+        None, max_length=64, description="With avoid_collisions: a stored scene's name."
+    )
+    margin: NonNegative = Field(
+        0.0, le=10.0, description="With avoid_collisions: clearance (m) a solution must keep."
+    )
+    collision_geometry: Literal["mesh", "convex"] = Field(
+        "mesh", description="With avoid_collisions: meshes, or their convex hulls (faster)."
     )
 
 
@@ -219,6 +239,25 @@ def _budget(request: Request, timeout_ms: float) -> None:
         )
 
 
+def _collisions(request: Request, body: IKOptions) -> tuple | None:
+    """(obstacles, margin, geometry) for collision-aware IK, or None (validated here)."""
+    if not body.avoid_collisions:
+        for name in ("obstacles", "scene"):
+            if getattr(body, name) is not None:
+                raise InvalidInputError("only used with avoid_collisions: true", name)
+        return None
+    obstacles = resolve_obstacles(scene_store(request), body.obstacles, body.scene)
+    return obstacles, body.margin, body.collision_geometry
+
+
+def _accept(robot: RobotModel, opts: dict) -> Any:
+    """The collision-free predicate of collision-aware IK (builds the collision model)."""
+    if opts.get("collisions") is None:
+        return None
+    obstacles, margin, geometry = opts["collisions"]
+    return collision_filter(robot, obstacles, margin=margin, mode=geometry)
+
+
 def _options(robot: RobotModel, body: IKOptions) -> dict[str, Any]:
     frame = body.frame or robot.ee_frame
     robot.frame_id(frame)
@@ -253,6 +292,7 @@ def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict,
         timeout_ms=opts["timeout_ms"],
         max_iterations=opts["max_iterations"],
         num_solutions=n,
+        accept=_accept(robot, opts),
     )
     return {
         "robot_id": robot.id,
@@ -287,6 +327,7 @@ def _solve_batch(
     results = []
     solved = 0
     current = seed
+    accept = _accept(robot, opts)
     for T in targets:
         res = ik.solve(
             robot,
@@ -298,6 +339,7 @@ def _solve_batch(
             tolerance=opts["tolerance"],
             timeout_ms=opts["timeout_ms"],
             max_iterations=opts["max_iterations"],
+            accept=accept,
         )
         solved += res.success
         if chain and res.success:
@@ -349,9 +391,10 @@ async def solve_ik(
     _budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
     opts = _options(robot, body)
+    opts["collisions"] = _collisions(request, body)
     target = target_placement(body.target, body.mode)
     seed = seed_configuration(robot, body.seed)
-    if body.timeout_ms <= INLINE_BUDGET_MS:
+    if body.timeout_ms <= INLINE_BUDGET_MS and opts["collisions"] is None:
         out = _solve_one(robot, target, seed, opts, body.num_solutions)
     else:
         out = await offload(_solve_one, robot, target, seed, opts, body.num_solutions)
@@ -383,6 +426,7 @@ async def solve_ik_batch(
         )
     robot = await load_robot(reg, robot_id)
     opts = _options(robot, body)
+    opts["collisions"] = _collisions(request, body)
     targets = [
         target_placement(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)
     ]

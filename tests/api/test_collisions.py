@@ -240,3 +240,112 @@ def test_collision_pairs_route_and_robot_detail(client) -> None:
     assert frozenset(("panda_link7", "panda_hand")) not in pairs
     assert body["srdf"] is True and "panda_hand" in body["links"]
     problem(client.get("/robots/nope/collision_pairs"), 404, "robot_id")
+
+
+# ----------------------------------------------------------------- collision-aware IK
+L1, L2 = 1.0, 0.8  # planar2
+
+
+def _elbows(x: float, y: float) -> list[tuple[float, float]]:
+    """Closed-form planar 2-link IK: θ2 = ±acos c2, θ1 = atan2(y, x) − atan2(l2 s2, l1 + l2 c2)."""
+    c2 = (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)
+    out = []
+    for t2 in (math.acos(c2), -math.acos(c2)):
+        t1 = math.atan2(y, x) - math.atan2(L2 * math.sin(t2), L1 + L2 * math.cos(t2))
+        out.append((t1, t2))
+    return out
+
+
+def _segment_distance(p, a, b) -> float:
+    ap, ab = [p[0] - a[0], p[1] - a[1]], [b[0] - a[0], b[1] - a[1]]
+    t = max(0.0, min(1.0, (ap[0] * ab[0] + ap[1] * ab[1]) / (ab[0] ** 2 + ab[1] ** 2)))
+    return math.hypot(ap[0] - t * ab[0], ap[1] - t * ab[1])
+
+
+def test_collision_aware_ik_returns_the_other_elbow(client) -> None:
+    x, y = 1.2, 0.6
+    (blocked, free) = _elbows(x, y)
+    elbow = [L1 * math.cos(blocked[0]), L1 * math.sin(blocked[0]), 0.0]
+    rock = {"name": "rock", "shape": "sphere", "radius": 0.1, "pose": {"position": elbow}}
+    # Precondition (closed form): the free elbow's links stay clear of the rock.
+    free_elbow = (L1 * math.cos(free[0]), L1 * math.sin(free[0]))
+    for a, b in (((0.0, 0.0), free_elbow), (free_elbow, (x, y))):
+        assert _segment_distance(elbow, a, b) > 0.1 + 0.03 + 0.05
+    request = {"target": {"position": [x, y, 0.0]}, "mode": "position", "num_solutions": 2}
+
+    both = client.post("/robots/planar2/ik", json=request).json()
+    assert both["success"] and len(both["solutions"]) == 2
+
+    r = client.post(
+        "/robots/planar2/ik",
+        json={**request, "avoid_collisions": True, "obstacles": [rock], "timeout_ms": 50},
+    )
+    assert r.status_code == 200, r.text
+    body = r.json()
+    assert body["success"] and len(body["solutions"]) == 1
+    q = body["solutions"][0]["q"]
+    assert q == pytest.approx(list(free), abs=1e-6)
+    check = client.post("/robots/planar2/collisions", json={"q": q, "obstacles": [rock]}).json()
+    assert not check["in_collision"]
+
+
+def test_collision_aware_ik_with_scene_and_no_free_solution(client) -> None:
+    x, y = 1.2, 0.6
+    walls = [
+        {"name": f"w{i}", "shape": "sphere", "radius": 0.1, "pose": {"position": [ex, ey, 0]}}
+        for i, (ex, ey) in enumerate(
+            (L1 * math.cos(t1), L1 * math.sin(t1)) for t1, _ in _elbows(x, y)
+        )
+    ]
+    assert client.post("/scenes", json={"name": "elbows", "obstacles": walls}).status_code == 201
+    body = client.post(
+        "/robots/planar2/ik",
+        json={
+            "target": {"position": [x, y, 0.0]},
+            "mode": "position",
+            "avoid_collisions": True,
+            "scene": "elbows",
+            "timeout_ms": 20,
+        },
+    ).json()
+    assert body["success"] is False and body["solutions"] == []
+
+
+def test_collision_aware_ik_batch(client) -> None:
+    x, y = 1.2, 0.6
+    blocked, free = _elbows(x, y)
+    elbow = [L1 * math.cos(blocked[0]), L1 * math.sin(blocked[0]), 0.0]
+    rock = {"name": "rock", "shape": "sphere", "radius": 0.1, "pose": {"position": elbow}}
+    body = client.post(
+        "/robots/planar2/ik/batch",
+        json={
+            "targets": [{"position": [x, y, 0.0]}],
+            "mode": "position",
+            "avoid_collisions": True,
+            "obstacles": [rock],
+            "timeout_ms": 50,
+        },
+    ).json()
+    assert body["solved"] == 1
+    assert body["results"][0]["q"] == pytest.approx(list(free), abs=1e-6)
+
+
+@pytest.mark.parametrize(
+    ("extra", "field"),
+    [
+        ({"obstacles": [BALL]}, "obstacles"),
+        ({"scene": "x"}, "scene"),
+        ({"avoid_collisions": True, "scene": "missing"}, "scene"),
+        ({"avoid_collisions": True, "obstacles": [{**BALL, "radius": 0}]}, "obstacles.0.radius"),
+        ({"avoid_collisions": True, "margin": -1}, "margin"),
+        ({"avoid_collisions": "yes"}, "avoid_collisions"),
+        ({"avoid_collisions": True, "collision_geometry": "voxel"}, "collision_geometry"),
+    ],
+)
+def test_collision_aware_ik_bad_input(client, extra: dict, field: str) -> None:
+    r = client.post(
+        "/robots/planar2/ik",
+        json={"target": {"position": [1.2, 0.6, 0]}, "mode": "position", **extra},
+    )
+    assert r.status_code in (404, 422), r.text
+    assert r.json()["field"] == field
