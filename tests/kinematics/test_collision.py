@@ -372,3 +372,69 @@ def test_answers_do_not_depend_on_history(registry) -> None:
     cm.check(np.array(FOLDED), obstacles, distances=True)
     again = [(p.a, p.b, p.distance) for p in cm.check(q, obstacles, distances=True).pairs]
     assert first == again
+
+
+def test_collision_aware_ik_core(planar2: RobotModel) -> None:
+    """ik.solve with the collision predicate skips the elbow the obstacle blocks."""
+    import pinocchio as pin
+
+    from app.kinematics import ik
+
+    x, y = 1.2, 0.6
+    c2 = (x * x + y * y - L1**2 - L2**2) / (2 * L1 * L2)
+    sols = []
+    for t2 in (math.acos(c2), -math.acos(c2)):
+        sols.append((math.atan2(y, x) - math.atan2(L2 * math.sin(t2), L1 + L2 * math.cos(t2)), t2))
+    blocked, free = sols
+    elbow = [L1 * math.cos(blocked[0]), L1 * math.sin(blocked[0]), 0.0]
+    accept = collision_filter(planar2, parse_obstacles([sphere("rock", elbow, 0.1)]))
+    target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
+    res = ik.solve(
+        planar2, "tool", target, mode="position", num_solutions=2, accept=accept, timeout_ms=30
+    )
+    assert res.success and len(res.solutions) == 1
+    np.testing.assert_allclose(res.solutions[0].q, free, atol=1e-6)
+
+
+@pytest.mark.parametrize(
+    ("items", "field"),
+    [
+        ("box", "obstacles"),
+        (["box"], "obstacles.0"),
+        ([{"name": "a", "shape": "sphere", "radius": True}], "obstacles.0.radius"),
+        ([{"name": "a", "shape": "sphere", "radius": math.nan}], "obstacles.0.radius"),
+        ([{"name": "a", "shape": "sphere", "radius": math.inf}], "obstacles.0.radius"),
+        ([{"name": "a", "shape": "box", "size": "1 1 1"}], "obstacles.0.size"),
+        ([{"name": "a", "shape": "box", "size": [1, 1, math.nan]}], "obstacles.0.size.2"),
+        ([{"name": "a", "shape": "sphere", "radius": 1, "pose": [0, 0, 0]}], "obstacles.0.pose"),
+        (
+            [{"name": "a", "shape": "sphere", "radius": 1, "pose": {"rpy": [0, 0, 0]}}],
+            "obstacles.0.pose.rpy",
+        ),
+        ([{"name": "a" * 129, "shape": "sphere", "radius": 1}], "obstacles.0.name"),
+        ([{"name": "a", "shape": "sphere", "radius": 1}] * 2, "obstacles.1.name"),
+        ([{"name": f"s{i}", "shape": "sphere", "radius": 1} for i in range(1001)], "obstacles"),
+    ],
+)
+def test_parse_obstacles_rejects(items, field: str) -> None:
+    with pytest.raises(InvalidInputError) as err:
+        parse_obstacles(items)
+    assert err.value.field == field
+
+
+def test_parse_obstacles_normalises_orientation() -> None:
+    half = math.sqrt(0.5)
+    (o,) = parse_obstacles(
+        [
+            {
+                "name": "a",
+                "shape": "box",
+                "size": [1, 2, 3],
+                "pose": {"position": [1, 2, 3], "orientation": [0, 0, -half * 1.0004, -half]},
+            }
+        ]
+    )
+    assert o.orientation[3] > 0 and math.isclose(np.linalg.norm(o.orientation), 1.0)
+    M = o.placement()
+    np.testing.assert_allclose(M.rotation, [[0, -1, 0], [1, 0, 0], [0, 0, 1]], atol=1e-3)
+    assert o.to_json()["size"] == [1.0, 2.0, 3.0]
