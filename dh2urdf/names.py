@@ -8,8 +8,8 @@ For a table with n rows the URDF holds:
   link ``link_i`` and the fixed joint ``fixed_dh_i`` (``link_i`` → ``dh_i``);
 * fixed joint ``fixed_tool`` (``dh_n`` → ``tool``, the tool transform).
 
-Pinocchio puts joint and link names into one frame namespace, so table joint names must
-avoid all of these (:func:`generated_names`).
+Pinocchio puts joint and link names into one frame namespace (next to its own
+``universe``), so table joint names must avoid all of these (:func:`reserved_names`).
 """
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ __all__ = [
     "dh_joint",
     "body_link",
     "generated_names",
+    "reserved_names",
 ]
 
 #: Root link of every generated URDF (world frame).
@@ -30,6 +31,8 @@ ROOT_LINK = "world"
 TOOL_LINK = "tool"
 #: Fixed joint dh_n → tool.
 TOOL_JOINT = "fixed_tool"
+#: Frame names Pinocchio creates by itself.
+PINOCCHIO_NAMES = frozenset({"universe"})
 
 
 def dh_link(i: int) -> str:
@@ -55,3 +58,8 @@ def generated_names(n: int) -> frozenset[str]:
     for i in range(1, n + 1):
         names.add(body_link(i))
     return frozenset(names)
+
+
+def reserved_names(n: int) -> frozenset[str]:
+    """Names a table joint may not take: :func:`generated_names` plus Pinocchio's own."""
+    return generated_names(n) | PINOCCHIO_NAMES

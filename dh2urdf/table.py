@@ -41,7 +41,7 @@ import numpy as np
 import yaml
 
 from dh2urdf.math import xyz_rpy_to_matrix
-from dh2urdf.names import generated_names
+from dh2urdf.names import reserved_names
 
 __all__ = [
     "DHError",
@@ -646,12 +646,12 @@ def _parse_table(data: Any) -> DHTable:
         joints.append(joint)
 
     # Joint names share Pinocchio's frame namespace with the generated links and fixed joints.
-    reserved = generated_names(len(joints))
+    reserved = reserved_names(len(joints))
     for index, joint in enumerate(joints):
         if joint.name in reserved:
             raise DHError(
                 f"joints[{index}].name",
-                f"{joint.name!r} is reserved for a generated frame of the URDF",
+                f"{joint.name!r} is reserved for a frame of the generated model",
             )
 
     return DHTable(

@@ -79,8 +79,9 @@ BAD_FILES = {
 }
 
 
-@pytest.mark.parametrize("filename", sorted(BAD_FILES))
+@pytest.mark.parametrize("filename", ["missing_field.yaml", "bad_yaml.yaml", "bad_json.json"])
 def test_bad_input_exit_2_one_line(tmp_path: Path, filename: str) -> None:
+    """End to end: exit status 2, one line on stderr, no traceback, no output file."""
     text, reason = BAD_FILES[filename]
     path = tmp_path / filename
     path.write_text(text)
@@ -93,19 +94,26 @@ def test_bad_input_exit_2_one_line(tmp_path: Path, filename: str) -> None:
     assert not (tmp_path / "out.urdf").exists()
 
 
+@pytest.mark.parametrize("filename", sorted(BAD_FILES))
+def test_main_bad_input_exit_2_one_line(
+    tmp_path: Path, filename: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    text, reason = BAD_FILES[filename]
+    path = tmp_path / filename
+    path.write_text(text)
+    assert main([str(path), "-o", str(tmp_path / "out.urdf")]) == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    assert err.count("\n") == 1
+    assert err.startswith(f"dh2urdf: error: {path}: {reason}"), err
+    assert not (tmp_path / "out.urdf").exists()
+
+
 def test_missing_file_exit_2(tmp_path: Path) -> None:
     path = tmp_path / "nope.yaml"
     result = run(str(path))
     assert result.returncode == 2
     assert result.stderr == f"dh2urdf: error: {path}: cannot read: No such file or directory\n"
-
-
-def test_usage_error_exit_2() -> None:
-    result = run()
-    assert result.returncode == 2
-    assert "Traceback" not in result.stderr
-    assert result.stderr.startswith("dh2urdf: error: the following arguments are required")
-    assert result.stderr.count("\n") == 1
 
 
 # ----------------------------------------------------------------- in process (fast)
@@ -156,6 +164,15 @@ def test_main_unwritable_output_exit_1(tmp_path: Path, capsys: pytest.CaptureFix
     assert main([str(ARMAR), "-o", str(target)]) == 1
     err = capsys.readouterr().err
     assert err == f"dh2urdf: error: {target}: cannot write: No such file or directory\n"
+
+
+def test_main_usage_error_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main([]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("dh2urdf: error: the following arguments are required: table")
+    assert err.count("\n") == 1
+    assert main(["a.yaml", "--format", "xml"]) == 2
+    assert "invalid choice: 'xml'" in capsys.readouterr().err
 
 
 def test_main_help_exit_0(capsys: pytest.CaptureFixture[str]) -> None:

@@ -156,6 +156,17 @@ def test_to_dict_round_trips_exactly() -> None:
     assert DHTable.from_json(json.dumps(t.to_dict())) == t
 
 
+def test_yaml_dump_of_to_dict_round_trips_exactly() -> None:
+    """The service stores ``yaml.safe_dump(table.to_dict())`` and reloads it."""
+    import yaml
+
+    doc = base_doc()
+    doc["joints"][0].update(a=1e-5, d=123456789.125, theta=1 / 3)
+    doc["tool"] = {"xyz": [1e-20, 0, 2 / 3]}
+    t = DHTable.from_dict(doc)
+    assert DHTable.from_yaml(yaml.safe_dump(t.to_dict(), sort_keys=False)) == t
+
+
 def test_format_for_path() -> None:
     assert format_for_path("a.YAML") == "yaml"
     assert format_for_path("a.yml") == "yaml"
@@ -293,7 +304,12 @@ BAD_INPUTS = [
     (
         "reserved joint name",
         _set("joints[0].name", "tool"),
-        "joints[0].name: 'tool' is reserved for a generated frame of the URDF",
+        "joints[0].name: 'tool' is reserved for a frame of the generated model",
+    ),
+    (
+        "pinocchio's universe",
+        _set("joints[0].name", "universe"),
+        "joints[0].name: 'universe' is reserved...",
     ),
     ("reserved dh name", _set("joints[1].name", "dh_3"), "joints[1].name: 'dh_3' is reserved..."),
     ("robot name with path", _set("name", "../robot"), "name: invalid robot name '../robot'..."),
