@@ -12,10 +12,15 @@ Which segments, and on which link (all coordinates in metres, in that link's fra
     on ``link_{i-1}`` (``dh_0`` for row 1): the a segment (0,0,0)→(a_{i-1},0,0) along
     x_{i-1}; on ``link_i``: the d segment (0,0,−d)→(0,0,0) along z_i.
 
-For a prismatic joint only the constant offset ``d`` is drawn (the part that moves with the
-joint); the stroke q is not. A non-zero tool translation adds a segment from the origin of
-dh_n to the tool point, on ``link_n``. Segments shorter than :data:`MIN_SEGMENT_LENGTH` are
-skipped.
+For a prismatic joint the d segment is its constant offset ``d`` (it rides with the joint),
+and the sliding rod ("ram") is drawn as one more segment of length ``upper − lower`` on
+``link_i``, ending where the joint variable q ends and reaching back along z: in the link's
+frame (0,0,−s)→(0,0,0) for ``standard`` and (0,0,−d−s)→(0,0,−d) for ``modified``, s the
+stroke. So in any configuration the ram spans q − s … q along the sliding axis, measured
+from where the motion starts, like a boom sliding through its bearing.
+
+A non-zero tool translation adds a segment from the origin of dh_n to the tool point, on
+``link_n``. Segments shorter than :data:`MIN_SEGMENT_LENGTH` are skipped.
 """
 
 from __future__ import annotations
@@ -48,8 +53,8 @@ class Segment:
         URDF link carrying the geometry.
     start, end : tuple of float
         End points (m) in that link's frame.
-    kind : {"a", "d", "tool"}
-        Which DH segment it is.
+    kind : {"a", "d", "ram", "tool"}
+        Which segment it is (``ram``: the sliding rod of a prismatic joint).
     row : int
         1-based table row the segment comes from (n for the tool segment).
     """
@@ -57,7 +62,7 @@ class Segment:
     link: str
     start: Point
     end: Point
-    kind: Literal["a", "d", "tool"]
+    kind: Literal["a", "d", "ram", "tool"]
     row: int
 
     @property
@@ -76,6 +81,10 @@ def segments(table: DHTable) -> list[Segment]:
     n = table.dof
     tool_xyz = np.array(table.tool.xyz)
     for i, joint in enumerate(table.joints, start=1):
+        if joint.is_prismatic and joint.lower is not None and joint.upper is not None:
+            stroke = joint.upper - joint.lower
+            back = 0.0 if table.convention == "standard" else -joint.d
+            out.append(Segment(body_link(i), (0.0, 0.0, back - stroke), (0.0, 0.0, back), "ram", i))
         if table.convention == "standard":
             ct, st = math.cos(joint.theta), math.sin(joint.theta)
             knee = (0.0, 0.0, joint.d)

@@ -195,7 +195,13 @@ def test_zero_length_segments_are_skipped() -> None:
     d = doc()
     d["joints"][1].update(a=0.0, d=0.0)
     table = DHTable.from_dict(d)
-    assert [s.link for s in segments(table)] == ["link_1", "link_1", "link_3", "link_3"]
+    assert [(s.link, s.kind) for s in segments(table)] == [
+        ("link_1", "d"),
+        ("link_1", "a"),
+        ("link_3", "ram"),
+        ("link_3", "d"),
+        ("link_3", "a"),
+    ]
     root = parse(to_urdf(table))
     assert "link_2" not in shapes(root, "visual")
 
@@ -252,6 +258,39 @@ def test_capsules_follow_the_dh_segments(doc_: dict) -> None:
     for p0, p1 in cylinders:
         for p in (p0, p1):
             assert min(np.linalg.norm(p - x) for x in points) < 1e-9, (p, points)
+
+
+@pytest.mark.parametrize("convention", ["standard", "modified"])
+def test_prismatic_ram_spans_the_stroke_behind_the_joint_variable(convention: str) -> None:
+    """The ram of a prismatic joint covers q − (upper − lower) … q along the sliding axis."""
+    d = doc(convention)
+    table = DHTable.from_dict(d)
+    joint = table.joints[2]
+    stroke = joint.upper - joint.lower
+    assert [s.length for s in segments(table) if s.kind == "ram"] == [stroke]
+    text = to_urdf(table)
+    model = pin.buildModelFromXML(text)
+    gmodel = pin.buildGeomFromUrdfString(model, text, pin.GeometryType.COLLISION)
+    data, gdata = model.createData(), pin.GeometryData(gmodel)
+    for seed in range(5):
+        q = random_q(table, np.random.default_rng(seed))
+        pin.updateGeometryPlacements(model, data, gmodel, gdata, pin_q(model, q))
+        frames = reference_chain(d, q)
+        if convention == "standard":
+            axis, start = frames[2][:3, 2], frames[2][:3, 3]  # z_2, o_2: the motion starts there
+            front = start + axis * q[2]
+        else:
+            axis = frames[3][:3, 2]  # z_3; the motion ends at o_3 after the offset d
+            front = frames[3][:3, 3] - axis * joint.d
+        back = front - axis * stroke
+        assert any(
+            min(
+                np.abs(p0 - back).max() + np.abs(p1 - front).max(),
+                np.abs(p1 - back).max() + np.abs(p0 - front).max(),
+            )
+            < 1e-12
+            for p0, p1 in cylinder_endpoints(gmodel, gdata)
+        )
 
 
 def test_write_urdf(tmp_path) -> None:
