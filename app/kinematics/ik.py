@@ -98,8 +98,11 @@ _MAX_STEP = 2.0
 _STALL = 3
 #: Iteration cap of one attempt (from the seed or a restart).
 _ATTEMPT_CAP = 30
-#: Seed of the restart generator when none is given (reproducible answers).
+#: Seed and size of the per-chain table of restart configurations.
 _RNG_SEED = 0x1C0DE
+_TABLE = 4096
+#: Lock joints pushed against a limit for the step (active-set clamping).
+_CLAMP = True
 
 
 @dataclass(slots=True)
@@ -158,6 +161,10 @@ class Chain:
         # Restart sampling box: the limits, or one turn for continuous joints.
         self.sample_lo = np.where(np.isfinite(self.lower), self.lower, -math.pi)
         self.sample_hi = np.where(np.isfinite(self.upper), self.upper, math.pi)
+        # A fixed table of restart configurations (uniform in the box): restarts cost no
+        # random-number setup per query, and answers are reproducible.
+        u = np.random.default_rng(_RNG_SEED).random((_TABLE, self.k))
+        self.restart_table = self.sample_lo + (self.sample_hi - self.sample_lo) * u
         self.clip_lo = np.where(np.isfinite(self.lower), self.lower, -np.inf)
         self.clip_hi = np.where(np.isfinite(self.upper), self.upper, np.inf)
 
@@ -264,7 +271,8 @@ def solve(
     analytic
         Try closed forms (:mod:`app.kinematics.analytic_ik`) first where the chain admits one.
     rng
-        Random generator for restarts (default: a fixed seed, so answers are reproducible).
+        Random generator for restarts (default: a fixed per-chain table of uniform samples,
+        so answers are reproducible).
 
     Returns
     -------
@@ -425,6 +433,8 @@ class _Search:
         rows_p, rows_r = rows[rows < 3], rows[rows >= 3]
         plain, plain_q = ch.plain, ch.plain_q
         all_plain = plain.size == ch.k
+        if all_plain and np.array_equal(plain_q, np.arange(plain_q[0], plain_q[0] + ch.k)):
+            plain_q = slice(int(plain_q[0]), int(plain_q[0]) + ch.k)
         has_cont = ch.has_continuous
         cont, cont_q, cont_q1 = ch.cont, ch.cont_q, ch.cont_q1
         perf = time.perf_counter
@@ -441,6 +451,7 @@ class _Search:
         max_step = _MAX_STEP
         max_step2 = max_step * max_step
         null_scale = 1.0 / _NULL_ENERGY
+        clamp = _CLAMP and redundant  # a locked joint leaves a square chain short of a task row
         redundant = redundant and gain > 0.0
         stall_limit, attempt_cap = _STALL, _ATTEMPT_CAP
         if np.array_equal(cols, np.arange(cols[0], cols[0] + cols.size)):
@@ -456,6 +467,7 @@ class _Search:
         best_attempt = math.inf
         stall = 0
         it = self.iterations
+        best_energy, best_qa = self.best_energy, None
         try:
             while True:
                 if it >= cap:
@@ -508,9 +520,8 @@ class _Search:
                     attempt_iters, best_attempt, stall = 0, math.inf, 0
                     continue
                 # ---- stall / restart logic
-                if energy < self.best_energy:
-                    self.best_energy = energy
-                    self.best_q = self.wire(qa)
+                if energy < best_energy:
+                    best_energy, best_qa = energy, qa
                 if energy < 0.81 * best_attempt:  # ‖e‖ decreased by 10 %
                     best_attempt = energy
                     stall = 0
@@ -530,32 +541,59 @@ class _Search:
                     Jt = Je[rows]
                     if sw is not None:
                         Jt = Jt * sw[:, None]
+                lam2 = damp * energy + mu
                 A = Jt @ Jt.T
-                A += (damp * energy + mu) * eye
+                A += lam2 * eye
                 if redundant:
                     # Preference gain fades with the error (quadratic convergence kept).
-                    z = q_ref - qa
-                    z *= gain * min(1.0, energy * null_scale)
+                    z = (q_ref - qa) * (gain * min(1.0, energy * null_scale))
                     dq = z - Jt.T @ posv(A, et + Jt @ z)[1]
                 else:
                     dq = Jt.T @ posv(A, et)[1]
                     dq *= -1.0
-                n2 = dq @ dq
-                if n2 > max_step2:
-                    dq *= max_step / math.sqrt(n2)
-                qa += dq
-                if has_cont:
-                    qa[cont] = (qa[cont] + math.pi) % _TWO_PI - math.pi
-                np.minimum(np.maximum(qa, lo, out=qa), hi, out=qa)
+                q_new = qa + dq
+                low, high = q_new < lo, q_new > hi
+                if low.any() or high.any():
+                    # Joints already at a limit and pushed further are locked for this step
+                    # (their columns removed) so the other joints take over their share.
+                    locked = (low & (qa <= lo)) | (high & (qa >= hi))
+                    if clamp and locked.any() and not locked.all():
+                        Jl = Jt * ~locked
+                        A = Jl @ Jl.T
+                        A += lam2 * eye
+                        dq = Jl.T @ posv(A, et)[1]
+                        dq *= -1.0
+                        q_new = qa + dq
+                    n2 = dq @ dq
+                    if n2 > max_step2:
+                        q_new = qa + dq * (max_step / math.sqrt(n2))
+                    if has_cont:
+                        q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
+                    qa = np.minimum(np.maximum(q_new, lo), hi)
+                else:
+                    n2 = dq @ dq
+                    if n2 > max_step2:
+                        q_new = qa + dq * (max_step / math.sqrt(n2))
+                        if has_cont:
+                            q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
+                        qa = np.minimum(np.maximum(q_new, lo), hi)
+                    elif has_cont:
+                        q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
+                        qa = q_new
+                    else:
+                        qa = q_new
         finally:
             self.iterations = it
+            if best_qa is not None and best_energy < self.best_energy:
+                self.best_energy, self.best_q = best_energy, self.wire(best_qa)
 
     def _restart(self, rng: np.random.Generator | None) -> np.ndarray:
         """A uniformly random configuration of the active joints (a TRAC-IK jump)."""
         self.restarts += 1
+        ch = self.ch
         if rng is None:
-            rng = self.rng = np.random.default_rng(_RNG_SEED)
-        return rng.uniform(self.ch.sample_lo, self.ch.sample_hi)
+            return ch.restart_table[(self.restarts - 1) % _TABLE]
+        return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * rng.random(ch.k)
 
     # ------------------------------------------------------------------- result
     def result(self, method: str, t_start: float, deadline: float) -> IKResult:
