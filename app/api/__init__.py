@@ -2,7 +2,18 @@
 
 from __future__ import annotations
 
-from app.api import analysis, collisions, fk, health, ik, jacobian, robots, scenes, velocity
+from app.api import (
+    analysis,
+    collisions,
+    fk,
+    health,
+    ik,
+    jacobian,
+    reachability,
+    robots,
+    scenes,
+    velocity,
+)
 
 #: Routers mounted by :func:`app.main.create_app`, in documentation order.
 ROUTERS = [
@@ -11,6 +22,7 @@ ROUTERS = [
     fk.router,
     jacobian.router,
     analysis.router,
+    reachability.router,
     collisions.router,
     scenes.router,
     ik.router,

@@ -1,0 +1,503 @@
+"""Reachability maps over HTTP: background builds, stored maps, O(1) queries, PNG slices.
+
+- POST   /robots/{robot_id}/reachability                      start a build (write, 202)
+- GET    /robots/{robot_id}/reachability/jobs                 builds of this process
+- GET    /robots/{robot_id}/reachability/jobs/{job_id}        status and progress
+- DELETE /robots/{robot_id}/reachability/jobs/{job_id}        cancel (write)
+- GET    /robots/{robot_id}/reachability/maps                 stored maps
+- GET    /robots/{robot_id}/reachability/maps/{map_id}        one map's metadata
+- DELETE /robots/{robot_id}/reachability/maps/{map_id}        delete (write)
+- POST   /robots/{robot_id}/reachability/query                poses → reachable, manipulability
+- GET    /robots/{robot_id}/reachability/maps/{map_id}/slice.png   heat map of one voxel layer
+
+The grid, orientation bins, sampling and storage are described in
+:mod:`app.kinematics.reachability`. Jobs live in the memory of the process that started
+them (with several uvicorn workers, ask the same worker; a restart forgets jobs, never
+finished maps, which are files under ``DENAVIT_DATA_DIR/maps``).
+"""
+
+from __future__ import annotations
+
+import struct
+import threading
+import zlib
+from typing import Annotated, Literal
+
+import numpy as np
+from fastapi import APIRouter, Depends, Query, Request
+from fastapi import Path as PathParam
+from pydantic import BaseModel, Field
+from starlette.responses import Response
+
+from app.api.common import (
+    Finite,
+    ORJSONResponse,
+    Quat,
+    RobotId,
+    Schema,
+    Vec3,
+    load_robot,
+    offload,
+    registry,
+)
+from app.api.errors import ERROR_RESPONSES
+from app.api.security import require_token
+from app.kinematics.analysis import Part
+from app.kinematics.errors import ConflictError, InvalidInputError
+from app.kinematics.reachability import (
+    MAX_ORIENTATION_DIVISIONS,
+    MAX_SAMPLES,
+    BuildJobs,
+    MapStore,
+    ReachabilityMap,
+    make_spec,
+    meta_public,
+    quaternions_checked,
+    robot_fingerprint,
+)
+from app.registry import Registry
+
+router = APIRouter(prefix="/robots/{robot_id}/reachability", tags=["reachability"])
+
+JobId = Annotated[str, PathParam(description="Build job id.", max_length=64)]
+MapId = Annotated[
+    str, PathParam(description="Map id, as listed by …/reachability/maps.", max_length=64)
+]
+ERRORS = {k: ERROR_RESPONSES[k] for k in (400, 404, 422)}
+
+_STATE_LOCK = threading.Lock()
+
+
+def _state(request: Request) -> tuple[MapStore, BuildJobs]:
+    """The app's map store and build queue (created on first use)."""
+    app = request.app
+    state = getattr(app.state, "reachability", None)
+    if state is None:
+        with _STATE_LOCK:
+            state = getattr(app.state, "reachability", None)
+            if state is None:
+                store = MapStore(app.state.settings.data_dir / "maps")
+                state = app.state.reachability = (store, BuildJobs(store))
+    return state
+
+
+# --------------------------------------------------------------------------- models
+class Bounds(Schema):
+    """An axis-aligned box of the root frame (m)."""
+
+    min: Vec3 = Field(description="[x, y, z] lower corner (m).")
+    max: Vec3 = Field(description="[x, y, z] upper corner (m); larger than min on every axis.")
+
+
+class BuildRequest(Schema):
+    """What to build: grid, orientation bins, manipulability rows, sampling."""
+
+    frame: str | None = Field(None, description="Frame; default the end effector.")
+    voxel_size: Finite = Field(0.05, gt=0, description="Edge of a position voxel (m).")
+    bounds: Bounds | None = Field(
+        None,
+        description="Box to cover; default a box that contains every reachable position "
+        "(centred on the chain's first joint, half-size the chain's total length).",
+    )
+    orientation_divisions: int = Field(
+        4,
+        ge=0,
+        le=MAX_ORIENTATION_DIVISIONS,
+        description="d: 4·d³ orientation bins (cubed 3-sphere, each ≈ 180°/d of rotation per "
+        "axis); 0 = one bin (position-only map).",
+    )
+    part: Part | None = Field(
+        None, description="Manipulability rows: full (default) | translation | rotation."
+    )
+    rows: list[str | int] | None = Field(
+        None, description='Explicit manipulability rows, e.g. ["vx", "vy"].', max_length=6
+    )
+    samples: int = Field(
+        200_000, ge=1, le=MAX_SAMPLES, description="Joint-space samples (grid: rounded)."
+    )
+    sampling: Literal["random", "grid"] = Field(
+        "random",
+        description="random: uniform within joint limits | grid: g = round(samples^(1/k)) "
+        "values per joint.",
+    )
+    seed: int = Field(0, ge=0, le=2**63 - 1, description="Seed of the random samples.")
+    self_collision: Literal["ignore", "mesh", "convex"] = Field(
+        "ignore",
+        description="Drop self-colliding samples using the collision module's geometry "
+        "(mesh or convex hulls); one collision query per sample, far slower.",
+    )
+
+
+class ProgressOut(BaseModel):
+    """How far a build is."""
+
+    percent: float
+    samples_done: int
+    samples_total: int
+    samples_per_second: float | None
+    elapsed_seconds: float
+    eta_seconds: float | None = Field(description="Seconds left at the current rate.")
+
+
+class JobResponse(BaseModel):
+    """A build job."""
+
+    job_id: str
+    robot_id: str
+    frame: str
+    status: Literal["queued", "running", "done", "failed", "cancelled"]
+    map_id: str | None = Field(description="The stored map, once done.")
+    error: str | None
+    progress: ProgressOut
+
+
+class JobList(BaseModel):
+    jobs: list[JobResponse]
+
+
+class MapBounds(BaseModel):
+    min: list[float]
+    max: list[float]
+
+
+class MapInfo(BaseModel):
+    """A stored map's metadata."""
+
+    map_id: str
+    robot_id: str
+    frame: str
+    created_at: str
+    bounds: MapBounds = Field(description="The grid's box (max = min + shape·voxel_size).")
+    voxel_size: float
+    shape: list[int] = Field(description="Voxels along x, y, z.")
+    orientation_divisions: int
+    orientation_bins: int
+    cells: int
+    rows: list[str]
+    joints: list[str] = Field(description="The sampled joints (those that move the frame).")
+    samples: int
+    sampling: str
+    seed: int
+    self_collision: str
+    samples_per_second: float | None
+    build_seconds: float | None
+    robot_fingerprint: str
+    reachable_cells: int
+    reachable_voxels: int
+    max_manipulability: float | None
+
+
+class MapList(BaseModel):
+    maps: list[MapInfo]
+
+
+class PoseIn(Schema):
+    """A pose to look up; without orientation, any orientation (best over the voxel)."""
+
+    position: Vec3 = Field(description="[x, y, z] (m), root frame.")
+    orientation: Quat | None = Field(None, description="Unit quaternion [x, y, z, w].")
+
+
+class QueryRequest(Schema):
+    """Poses to look up in a map: ``poses``, or the compact ``positions``/``orientations``."""
+
+    map_id: str = Field(description="The map to query.", max_length=64)
+    poses: list[PoseIn] | None = Field(None, description="Poses (root frame).")
+    positions: list[Vec3] | None = Field(None, description="Compact form: N×3 positions (m).")
+    orientations: list[Quat] | None = Field(
+        None, description="Compact form: N×4 quaternions [x, y, z, w] (omit: any orientation)."
+    )
+
+
+class QueryResponse(BaseModel):
+    """Entry i answers pose i."""
+
+    map_id: str
+    reachable: list[bool]
+    manipulability: list[float | None] = Field(
+        description="Best Yoshikawa manipulability seen in the pose's cell; null if unreachable."
+    )
+    in_bounds: list[bool] = Field(description="Whether the position lies inside the map's box.")
+
+
+# ---------------------------------------------------------------------------- routes
+@router.post(
+    "",
+    operation_id="build_reachability_map",
+    status_code=202,
+    response_model=JobResponse,
+    responses=ERRORS,
+    dependencies=[Depends(require_token)],
+)
+async def build_reachability_map(
+    robot_id: RobotId,
+    body: BuildRequest,
+    request: Request,
+    reg: Annotated[Registry, Depends(registry)],
+) -> ORJSONResponse:
+    """Start building a reachability map in the background; poll the returned job."""
+    robot = await load_robot(reg, robot_id)
+    frame = body.frame or robot.ee_frame
+    spec = make_spec(
+        robot,
+        frame,
+        voxel_size=body.voxel_size,
+        lower=body.bounds.min if body.bounds else None,
+        upper=body.bounds.max if body.bounds else None,
+        orientation_divisions=body.orientation_divisions,
+        part=body.part,
+        rows=body.rows,
+        samples=body.samples,
+        sampling=body.sampling,
+        seed=body.seed,
+        self_collision=body.self_collision,
+    )
+    _, jobs = _state(request)
+    job = jobs.submit(robot, spec)
+    return ORJSONResponse(
+        job.to_json(),
+        status_code=202,
+        headers={"Location": f"/robots/{robot.id}/reachability/jobs/{job.job_id}"},
+    )
+
+
+@router.get(
+    "/jobs", operation_id="list_reachability_jobs", response_model=JobList, responses=ERRORS
+)
+async def list_reachability_jobs(
+    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+) -> ORJSONResponse:
+    """Build jobs of this robot known to this process."""
+    await load_robot(reg, robot_id)
+    _, jobs = _state(request)
+    return ORJSONResponse({"jobs": [j.to_json() for j in jobs.list(robot_id)]})
+
+
+@router.get(
+    "/jobs/{job_id}",
+    operation_id="get_reachability_job",
+    response_model=JobResponse,
+    responses=ERRORS,
+)
+async def get_reachability_job(
+    robot_id: RobotId, job_id: JobId, request: Request
+) -> ORJSONResponse:
+    """Status and progress (percent, samples/s, ETA) of a build."""
+    _, jobs = _state(request)
+    return ORJSONResponse(jobs.get(robot_id, job_id).to_json())
+
+
+@router.delete(
+    "/jobs/{job_id}",
+    operation_id="cancel_reachability_job",
+    response_model=JobResponse,
+    responses={**ERRORS, 409: {"description": "The job has already finished."}},
+    dependencies=[Depends(require_token)],
+)
+async def cancel_reachability_job(
+    robot_id: RobotId, job_id: JobId, request: Request
+) -> ORJSONResponse:
+    """Cancel a queued or running build; nothing is stored. Cancelling twice is fine."""
+    _, jobs = _state(request)
+    return ORJSONResponse(jobs.cancel(robot_id, job_id).to_json())
+
+
+@router.get("/maps", operation_id="list_reachability_maps", response_model=MapList)
+async def list_reachability_maps(
+    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+) -> ORJSONResponse:
+    """Stored maps of this robot, oldest first."""
+    await load_robot(reg, robot_id)
+    store, _ = _state(request)
+    metas = await offload(store.list, robot_id)
+    return ORJSONResponse({"maps": [meta_public(m) for m in metas]})
+
+
+@router.get(
+    "/maps/{map_id}", operation_id="get_reachability_map", response_model=MapInfo, responses=ERRORS
+)
+async def get_reachability_map(
+    robot_id: RobotId, map_id: MapId, request: Request
+) -> ORJSONResponse:
+    """One stored map's metadata."""
+    store, _ = _state(request)
+    m = await offload(store.get, robot_id, map_id)
+    return ORJSONResponse(meta_public(m.meta))
+
+
+@router.delete(
+    "/maps/{map_id}",
+    operation_id="delete_reachability_map",
+    status_code=204,
+    responses=ERRORS,
+    dependencies=[Depends(require_token)],
+)
+async def delete_reachability_map(robot_id: RobotId, map_id: MapId, request: Request) -> Response:
+    """Delete a stored map."""
+    store, _ = _state(request)
+    await offload(store.delete, robot_id, map_id)
+    return Response(status_code=204)
+
+
+async def _map_for(request: Request, reg: Registry, robot_id: str, map_id: str) -> ReachabilityMap:
+    robot = await load_robot(reg, robot_id)
+    store, _ = _state(request)
+    m = await offload(store.get, robot_id, map_id)
+    if m.meta["robot_fingerprint"] != robot_fingerprint(robot):
+        raise ConflictError(
+            "the map was built for another model of this robot (its URDF has changed)", "map_id"
+        )
+    return m
+
+
+@router.post(
+    "/query",
+    operation_id="query_reachability",
+    response_model=QueryResponse,
+    responses={**ERRORS, 409: {"description": "The map belongs to an older robot model."}},
+)
+async def query_reachability(
+    robot_id: RobotId,
+    body: QueryRequest,
+    request: Request,
+    reg: Annotated[Registry, Depends(registry)],
+) -> ORJSONResponse:
+    """Look poses up in a map: O(1) each. Outside the map's box → not reachable."""
+    limit = request.app.state.settings.max_batch
+    if (body.poses is None) == (body.positions is None):
+        raise InvalidInputError("give exactly one of poses or positions", "poses")
+    field = "poses" if body.poses is not None else "positions"
+    n = len(body.poses) if body.poses is not None else len(body.positions)
+    if n == 0:
+        raise InvalidInputError("give at least one pose", field)
+    if n > limit:
+        raise InvalidInputError(f"{n} poses exceed the limit of {limit}", field)
+    quat: np.ndarray | None = None
+    if body.poses is not None:
+        pos = np.array([p.position for p in body.poses], dtype=float)
+        quat = np.full((n, 4), np.nan)
+        for i, p in enumerate(body.poses):
+            if p.orientation is not None:
+                quat[i] = p.orientation
+        given = ~np.isnan(quat[:, 0])
+        quat[given] = quaternions_checked(
+            quat[given], "poses.{}.orientation", np.flatnonzero(given)
+        )
+    else:
+        pos = np.array(body.positions, dtype=float)
+        if body.orientations is not None:
+            if len(body.orientations) != n:
+                raise InvalidInputError(
+                    f"expected {n} orientations (one per position), got {len(body.orientations)}",
+                    "orientations",
+                )
+            quat = quaternions_checked(np.array(body.orientations, dtype=float), "orientations.{}")
+    m = await _map_for(request, reg, robot_id, body.map_id)
+    reach, val, ok = m.query(pos, quat)
+    return ORJSONResponse(
+        {
+            "map_id": body.map_id,
+            "reachable": reach,
+            "manipulability": [None if np.isnan(v) else float(v) for v in val],
+            "in_bounds": ok,
+        }
+    )
+
+
+# ---------------------------------------------------------------------------- PNG
+#: Viridis, sampled at six points (low → high manipulability).
+_VIRIDIS = np.array(
+    [[68, 1, 84], [65, 68, 135], [42, 120, 142], [34, 168, 132], [122, 209, 81], [253, 231, 37]],
+    dtype=float,
+)
+UNREACHED_RGB = (235, 235, 235)
+
+
+def colour_map(values: np.ndarray, vmax: float) -> np.ndarray:
+    """RGB (…, 3) uint8: viridis over [0, vmax]; negative values (unreached) light grey."""
+    t = np.clip(values / vmax, 0.0, 1.0) if vmax > 0 else np.zeros_like(values)
+    x = t * (len(_VIRIDIS) - 1)
+    i = np.minimum(np.floor(x).astype(int), len(_VIRIDIS) - 2)
+    f = (x - i)[..., None]
+    rgb = _VIRIDIS[i] * (1 - f) + _VIRIDIS[i + 1] * f
+    rgb[values < 0] = UNREACHED_RGB
+    return np.round(rgb).astype(np.uint8)
+
+
+def png_bytes(rgb: np.ndarray) -> bytes:
+    """An 8-bit RGB PNG (zlib + struct; filter 0 on every row)."""
+    h, w, _ = rgb.shape
+    raw = b"".join(b"\x00" + rgb[r].tobytes() for r in range(h))
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return (
+            struct.pack(">I", len(data))
+            + kind
+            + data
+            + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+        )
+
+    return (
+        b"\x89PNG\r\n\x1a\n"
+        + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
+        + chunk(b"IDAT", zlib.compress(raw, 6))
+        + chunk(b"IEND", b"")
+    )
+
+
+def slice_image(m: ReachabilityMap, axis: int, value: float, scale: int | None) -> np.ndarray:
+    """RGB image of the voxel layer containing ``value`` along ``axis`` (0 x, 1 y, 2 z).
+
+    Colour = best manipulability over orientations in the voxel. Horizontal axis: the
+    first remaining axis (x for z and y slices, y for x slices), increasing to the right;
+    vertical: the second, increasing upwards.
+    """
+    spec = m.spec
+    name = "xyz"[axis]
+    lo = spec.lower[axis]
+    i = int(np.floor((value - lo) / spec.voxel_size))
+    if not 0 <= i < spec.shape[axis]:
+        raise InvalidInputError(
+            f"{value} is outside the map's {name} range [{lo}, {spec.upper[axis]})", name
+        )
+    layer = np.take(m.voxel_best(), i, axis=axis)  # (first, second) remaining axes
+    img_vals = layer.T[::-1]  # rows: second axis, top = largest
+    vmax = m.meta.get("max_manipulability") or 0.0
+    rgb = colour_map(img_vals.astype(float), float(vmax))
+    if scale is None:
+        scale = max(1, min(32, 512 // max(rgb.shape[0], rgb.shape[1])))
+    return np.repeat(np.repeat(rgb, scale, axis=0), scale, axis=1)
+
+
+@router.get(
+    "/maps/{map_id}/slice.png",
+    operation_id="get_reachability_slice",
+    responses={
+        **ERRORS,
+        200: {"content": {"image/png": {}}, "description": "The heat map (PNG)."},
+    },
+    response_class=Response,
+)
+async def get_reachability_slice(
+    robot_id: RobotId,
+    map_id: MapId,
+    request: Request,
+    reg: Annotated[Registry, Depends(registry)],
+    x: Annotated[float | None, Query(description="Slice at this x (m).")] = None,
+    y: Annotated[float | None, Query(description="Slice at this y (m).")] = None,
+    z: Annotated[float | None, Query(description="Slice at this z (m).")] = None,
+    scale: Annotated[
+        int | None, Query(ge=1, le=64, description="Pixels per voxel (default: ~512 px).")
+    ] = None,
+) -> Response:
+    """Heat map of one voxel layer: colour = best manipulability over orientations (viridis,
+    scaled to the map's maximum), light grey = unreached. Give exactly one of x, y, z."""
+    given = [(a, v) for a, v in enumerate((x, y, z)) if v is not None]
+    if len(given) != 1:
+        raise InvalidInputError("give exactly one of the query parameters x, y, z", "z")
+    axis, value = given[0]
+    if not np.isfinite(value):
+        raise InvalidInputError("must be a finite number", "xyz"[axis])
+    m = await _map_for(request, reg, robot_id, map_id)
+    rgb = slice_image(m, axis, value, scale)
+    return Response(png_bytes(rgb), media_type="image/png")
