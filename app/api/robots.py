@@ -21,7 +21,6 @@ from app.api.common import (
     ORJSONResponse,
     RobotId,
     Schema,
-    body_schema,
     offload,
     parse_json,
     registry,
@@ -161,7 +160,8 @@ class UrdfUpload(Schema):
     """A robot given as URDF text (and optionally SRDF)."""
 
     name: str = Field(
-        pattern=ID_PATTERN.pattern,
+        max_length=256,
+        json_schema_extra={"pattern": ID_PATTERN.pattern},
         description="Robot id: 1-64 of a-z, 0-9, '_' and '-' (used in /robots/{robot_id}).",
     )
     urdf: str = Field(
@@ -308,7 +308,12 @@ async def import_dh_robot(
     response_model=RobotDetail,
     dependencies=[Depends(require_token)],
     responses=_WRITE_ERRORS,
-    openapi_extra=body_schema(UrdfUpload),
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {"application/json": {"schema": UrdfUpload.model_json_schema()}},
+        }
+    },
 )
 async def upload_urdf_robot(
     request: Request, reg: Annotated[Registry, Depends(registry)]
