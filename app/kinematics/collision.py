@@ -443,8 +443,12 @@ class CollisionModel:
                 pa, pb = np.array(dr.getNearestPoint1()), np.array(dr.getNearestPoint2())
                 if comp.swap[k]:
                     pa, pb = pb, pa
+                if not (np.isfinite(pa).all() and np.isfinite(pb).all()):
+                    pa = pb = None
             elif pair_distances:
                 dist = float(pin.computeDistance(gm, gd, k).min_distance)
+            if not np.isfinite(dist):  # degenerate input (e.g. a prismatic joint at 1e300)
+                dist = np.nan
             key = (a, b, kind)
             prev = best.get(key)
             coll = k in hit_set
@@ -452,7 +456,7 @@ class CollisionModel:
                 best[key] = PairReport(a, b, kind, coll, dist, pa, pb)
             else:
                 prev.in_collision = prev.in_collision or coll
-                if dist < prev.distance:
+                if dist < prev.distance or np.isnan(prev.distance):
                     prev.distance, prev.point_a, prev.point_b = dist, pa, pb
         pairs = list(best.values())
         known = [p.distance for p in pairs if not np.isnan(p.distance)]

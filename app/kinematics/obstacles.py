@@ -46,6 +46,9 @@ QUATERNION_NORM_TOLERANCE = 1e-3
 MAX_OBSTACLES = 1000
 #: Longest obstacle name.
 MAX_NAME_LENGTH = 128
+#: Largest dimension and largest |coordinate| of a position (m): beyond this coal's
+#: bounding-volume arithmetic loses all precision.
+MAX_EXTENT = 1000.0
 
 # Which dimension fields each shape takes.
 _FIELDS = {
@@ -119,6 +122,8 @@ def _number(value: Any, field: str, *, positive: bool = False) -> float:
         raise InvalidInputError("must be a finite number", field)
     if positive and out <= 0.0:
         raise InvalidInputError(f"must be positive (got {out!r})", field)
+    if abs(out) > MAX_EXTENT:
+        raise InvalidInputError(f"must be within ±{MAX_EXTENT:g} m (got {out!r})", field)
     return out
 
 

@@ -129,6 +129,11 @@ def test_many_obstacles_are_checked_off_the_loop(client) -> None:
             {"name": "x", "shape": "sphere", "radius": 1, "pose": {"orientation": [0, 0, 0, 0]}},
             "obstacles.0.pose.orientation",
         ),
+        ({"name": "x", "shape": "sphere", "radius": 1e300}, "obstacles.0.radius"),
+        (
+            {"name": "x", "shape": "sphere", "radius": 1, "pose": {"position": [0, -2e3, 0]}},
+            "obstacles.0.pose.position.1",
+        ),
     ],
 )
 def test_bad_obstacles_are_422_naming_the_field(client, obstacle: dict, field: str) -> None:
@@ -163,6 +168,7 @@ def test_duplicate_obstacle_names(client) -> None:
         ({"joint_positions": {"nope": 1.0}}, "joint_positions.nope"),
         ({"scene": "s", "obstacles": [BALL]}, "scene"),
         ({"colour": 1}, "colour"),
+        ({"q": READY[:7] + [1e300]}, "q.7"),
     ],
 )
 def test_bad_request_fields(client, extra: dict, field: str) -> None:
@@ -219,6 +225,7 @@ def test_batch_with_distances(client) -> None:
             "obstacles.0.shape",
         ),
         ({}, "configurations"),
+        ({"configurations": [READY, READY[:7] + [-2e4]]}, "configurations.1.7"),
     ],
 )
 def test_batch_bad_input(client, payload: dict, field: str) -> None:
