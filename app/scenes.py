@@ -2,11 +2,12 @@
 
 A scene is ``{name, description, obstacles}`` (obstacles as in
 :mod:`app.kinematics.obstacles`, in the root frame of whichever robot it is used with).
-Files are written with :func:`app.store.atomic_write_bytes`, so a crash leaves the old file
-or the new one, and scenes survive restarts. Reads go to disk when a file changed (its
-``mtime_ns``/size differ from the cached copy), so several worker processes sharing one
-data directory see each other's scenes; within a process, create/delete are serialised by
-a lock, so a name is created once (409 for the second creator).
+Files are written with :func:`app.store.atomic_write_bytes` to a temporary name and then
+hard-linked to ``<name>.json`` (``os.link`` fails if the name exists), so a crash leaves no
+half-written scene, scenes survive restarts, and of two creators of one name — threads or
+worker processes sharing the data directory — exactly one wins (409 for the other). Reads
+go to disk when a file changed (its ``mtime_ns``/size differ from the cached copy), so
+workers see each other's scenes.
 
 Scene names are 1–64 characters of ``A–Z a–z 0–9 _ -`` (starting with a letter or digit):
 they are file names.
@@ -14,8 +15,9 @@ they are file names.
 
 from __future__ import annotations
 
+import os
 import re
-import threading
+import uuid
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,7 +27,7 @@ import orjson
 
 from app.kinematics.errors import ConflictError, InvalidInputError, UnknownNameError
 from app.kinematics.obstacles import Obstacle, parse_obstacles
-from app.store import atomic_write_bytes
+from app.store import TMP_PREFIX, atomic_write_bytes
 
 NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$"
 _NAME_RE = re.compile(NAME_PATTERN)
@@ -60,12 +62,19 @@ def validate_name(name: str, field: str = "name") -> str:
     return name
 
 
+def _fsync_dir(path: Path) -> None:
+    fd = os.open(path, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
 class SceneStore:
     """The scenes under ``root`` (``<data_dir>/scenes``)."""
 
     def __init__(self, root: Path) -> None:
         self.root = Path(root)
-        self._lock = threading.Lock()
         self._cache: dict[str, tuple[tuple[int, int], Scene]] = {}
 
     def _path(self, name: str) -> Path:
@@ -124,21 +133,31 @@ class SceneStore:
             raise InvalidInputError(f"at most {MAX_DESCRIPTION} characters", "description")
         scene = Scene(name, description, parse_obstacles(obstacles))
         data = orjson.dumps(scene.to_json(), option=orjson.OPT_INDENT_2)
-        with self._lock:
-            path = self._path(name)
-            if path.exists():
-                raise ConflictError(f"scene {name!r} already exists; delete it first", "name")
-            atomic_write_bytes(path, data)
+        path = self._path(name)
+        if path.exists():
+            raise ConflictError(f"scene {name!r} already exists; delete it first", "name")
+        tmp = self.root / f"{TMP_PREFIX}scene-{uuid.uuid4().hex}"
+        try:
+            atomic_write_bytes(tmp, data)
+            try:
+                os.link(tmp, path)
+            except FileExistsError:
+                raise ConflictError(
+                    f"scene {name!r} already exists; delete it first", "name"
+                ) from None
+        finally:
+            tmp.unlink(missing_ok=True)
+        _fsync_dir(self.root)
         return scene
 
     def delete(self, name: str, field: str = "name") -> None:
         """Remove a scene; :class:`UnknownNameError` (404) if absent."""
-        with self._lock:
-            if not isinstance(name, str) or not _NAME_RE.match(name):
-                raise UnknownNameError("scene", str(name), field, self.names())
-            path = self._path(name)
-            try:
-                path.unlink()
-            except FileNotFoundError:
-                raise UnknownNameError("scene", name, field, self.names()) from None
-            self._cache.pop(name, None)
+        if not isinstance(name, str) or not _NAME_RE.match(name):
+            raise UnknownNameError("scene", str(name), field, self.names())
+        path = self._path(name)
+        try:
+            path.unlink()
+        except FileNotFoundError:
+            raise UnknownNameError("scene", name, field, self.names()) from None
+        self._cache.pop(name, None)
+        _fsync_dir(self.root)

@@ -121,3 +121,30 @@ def test_corrupt_file_is_not_served(client, settings) -> None:
     (settings.data_dir / "scenes" / "bench-1.json").write_text("{not json")
     assert client.get("/scenes/bench-1").status_code == 404
     assert client.get("/scenes").json() == {"scenes": []}
+
+
+def test_concurrent_creators_one_wins(tmp_path) -> None:
+    """Threads on two stores sharing a directory (like two workers): exactly one create."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from app.kinematics.errors import ConflictError
+    from app.scenes import SceneStore
+
+    stores = [SceneStore(tmp_path / "scenes") for _ in range(2)]
+
+    def create(i: int) -> bool:
+        try:
+            stores[i % 2].create("race", [{**POST, "name": f"p{i}"}])
+            return True
+        except ConflictError:
+            return False
+
+    with ThreadPoolExecutor(8) as pool:
+        wins = list(pool.map(create, range(16)))
+    assert sum(wins) == 1
+    winner = f"p{wins.index(True)}"
+    assert [o.name for o in stores[0].get("race").obstacles] == [winner]
+    assert [o.name for o in stores[1].get("race").obstacles] == [winner]
+    assert sorted(p.name for p in (tmp_path / "scenes").iterdir()) == ["race.json"]
+    stores[1].delete("race")
+    assert stores[0].names() == []
