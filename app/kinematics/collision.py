@@ -328,9 +328,15 @@ class CollisionModel:
             )
         self.robot = robot
         self.mode = mode
-        gm = pin.buildGeomFromUrdfString(
-            robot.model, robot.urdf_text, pin.COLLISION, package_dirs=robot.package_dirs
-        )
+        try:
+            gm = pin.buildGeomFromUrdfString(
+                robot.model, robot.urdf_text, pin.COLLISION, package_dirs=robot.package_dirs
+            )
+        except (ValueError, RuntimeError, OSError, IndexError, KeyError, TypeError) as exc:
+            raise InvalidInputError(
+                f"the collision geometry of robot {robot.id!r} cannot be loaded ({exc})",
+                "robot_id",
+            ) from None
         if mode == "convex":
             for go in gm.geometryObjects:
                 if isinstance(go.geometry, coal.BVHModelBase):

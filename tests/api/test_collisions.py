@@ -356,3 +356,21 @@ def test_collision_aware_ik_bad_input(client, extra: dict, field: str) -> None:
     )
     assert r.status_code in (404, 422), r.text
     assert r.json()["field"] == field
+
+
+def test_robot_with_unloadable_meshes_is_422_not_500(client) -> None:
+    """An uploaded URDF whose collision mesh is not available: a 422 naming robot_id."""
+    urdf = (
+        '<robot name="m"><link name="a"><collision><geometry>'
+        '<mesh filename="package://nowhere/a.stl"/></geometry></collision></link>'
+        '<link name="b"/><joint name="j" type="revolute"><parent link="a"/><child link="b"/>'
+        '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        "</robot>"
+    )
+    r = client.post("/robots/urdf", json={"name": "meshless", "urdf": urdf})
+    assert r.status_code == 201, r.text
+    r = client.post("/robots/meshless/collisions", json={"q": [0.0]})
+    body = problem(r, 422, "robot_id")
+    assert "nowhere/a.stl" in body["detail"]
+    # The pair list is still available (computed from the URDF text).
+    assert client.get("/robots/meshless/collision_pairs").json()["pairs"] == []
