@@ -22,12 +22,16 @@ from app.api.common import (
     ORJSONResponse,
     RobotId,
     Schema,
+    finite_matrix,
     load_robot,
     offload,
+    parse_json,
     registry,
+    validate_body,
 )
 from app.api.errors import ERROR_RESPONSES
 from app.api.jacobian import REFERENCE_DOC
+from app.api.reachability import inline_body_schema
 from app.kinematics.analysis import (
     DEFAULT_RELATIVE_TOLERANCE,
     Part,
@@ -211,34 +215,45 @@ async def compute_manipulability(
     return ORJSONResponse(_manip_json(robot.id, frame, body.reference, q, res))
 
 
+def _batch_body(raw: bytes, n_joints: int) -> tuple[ManipulabilityBatchRequest, np.ndarray]:
+    """Decode a batch body: the configurations through NumPy when they are plain numbers of
+    the right width (fast path), else full validation naming the offending element."""
+    obj = parse_json(raw)
+    if isinstance(obj, dict) and "configurations" in obj:
+        qs = finite_matrix(obj["configurations"], n_joints)
+        if qs is not None and b"true" not in raw and b"false" not in raw:
+            return validate_body(ManipulabilityBatchRequest, {**obj, "configurations": []}), qs
+    body = validate_body(ManipulabilityBatchRequest, obj)
+    for i, row in enumerate(body.configurations):
+        if len(row) != n_joints:
+            raise InvalidInputError(
+                f"expected {n_joints} values (one per joint), got {len(row)}",
+                f"configurations.{i}",
+            )
+    return body, np.array(body.configurations, dtype=float).reshape(-1, n_joints)
+
+
 @router.post(
     "/manipulability/batch",
     operation_id="compute_manipulability_batch",
     response_model=ManipulabilityBatchResponse,
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
+    openapi_extra=inline_body_schema(ManipulabilityBatchRequest),
 )
 async def compute_manipulability_batch(
-    robot_id: RobotId,
-    body: ManipulabilityBatchRequest,
-    request: Request,
-    reg: Annotated[Registry, Depends(registry)],
+    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
 ) -> ORJSONResponse:
     """Scalar manipulability measures for many configurations (computed off the event loop)."""
     robot = await load_robot(reg, robot_id)
+    raw = await request.body()
+    body, qs = await offload(_batch_body, raw, robot.n)
     limit = request.app.state.settings.max_batch
-    n = len(body.configurations)
+    n = qs.shape[0]
     if n > limit:
         raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
     if n == 0:
         raise InvalidInputError("give at least one configuration", "configurations")
-    for i, row in enumerate(body.configurations):
-        if len(row) != robot.n:
-            raise InvalidInputError(
-                f"expected {robot.n} values (one per joint), got {len(row)}",
-                f"configurations.{i}",
-            )
     frame = body.frame or robot.ee_frame
-    qs = np.array(body.configurations, dtype=float)
     out = await offload(
         manipulability_batch,
         robot,

@@ -36,9 +36,12 @@ from app.api.common import (
     RobotId,
     Schema,
     Vec3,
+    finite_matrix,
     load_robot,
     offload,
+    parse_json,
     registry,
+    validate_body,
 )
 from app.api.errors import ERROR_RESPONSES
 from app.api.security import require_token
@@ -66,6 +69,30 @@ MapId = Annotated[
 ERRORS = {k: ERROR_RESPONSES[k] for k in (400, 404, 422)}
 
 _STATE_LOCK = threading.Lock()
+
+
+def inline_body_schema(model: type[BaseModel]) -> dict:
+    """``openapi_extra`` for a route that decodes its own body: the model's JSON schema with
+    its ``$defs`` substituted in place, so the document needs no extra components."""
+    schema = model.model_json_schema()
+    defs = schema.pop("$defs", {})
+
+    def inline(node):
+        if isinstance(node, dict):
+            ref = node.get("$ref", "")
+            if ref.startswith("#/$defs/"):
+                return inline(defs[ref.removeprefix("#/$defs/")])
+            return {k: inline(v) for k, v in node.items()}
+        if isinstance(node, list):
+            return [inline(v) for v in node]
+        return node
+
+    return {
+        "requestBody": {
+            "required": True,
+            "content": {"application/json": {"schema": inline(schema)}},
+        }
+    }
 
 
 def _state(request: Request) -> tuple[MapStore, BuildJobs]:
@@ -350,53 +377,86 @@ async def _map_for(request: Request, reg: Registry, robot_id: str, map_id: str) 
     return m
 
 
-@router.post(
-    "/query",
-    operation_id="query_reachability",
-    response_model=QueryResponse,
-    responses={**ERRORS, 409: {"description": "The map belongs to an older robot model."}},
-)
-async def query_reachability(
-    robot_id: RobotId,
-    body: QueryRequest,
-    request: Request,
-    reg: Annotated[Registry, Depends(registry)],
-) -> ORJSONResponse:
-    """Look poses up in a map: O(1) each. Outside the map's box → not reachable."""
-    limit = request.app.state.settings.max_batch
+def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray | None]:
+    """Decode and validate a query body: map id, positions (N, 3), quaternions (N, 4) with
+    NaN rows for "any orientation" (or ``None``: any orientation for all)."""
+    obj = parse_json(raw)
+    if (
+        isinstance(obj, dict)
+        and obj.keys() <= {"map_id", "positions", "orientations"}
+        and isinstance(obj.get("map_id"), str)
+        and len(obj["map_id"]) <= 64
+        and b"true" not in raw
+        and b"false" not in raw
+    ):
+        # fast path: numbers only, right widths (else full validation names the element)
+        pos = finite_matrix(obj.get("positions"), 3)
+        quat = finite_matrix(obj["orientations"], 4) if "orientations" in obj else None
+        if pos is not None and (quat is not None or "orientations" not in obj):
+            body = QueryRequest(map_id=obj["map_id"])
+            return _check_query(body.map_id, pos, quat, "positions", limit)
+    body = validate_body(QueryRequest, obj)
     if (body.poses is None) == (body.positions is None):
         raise InvalidInputError("give exactly one of poses or positions", "poses")
-    field = "poses" if body.poses is not None else "positions"
-    n = len(body.poses) if body.poses is not None else len(body.positions)
-    if n == 0:
-        raise InvalidInputError("give at least one pose", field)
-    if n > limit:
-        raise InvalidInputError(f"{n} poses exceed the limit of {limit}", field)
-    quat: np.ndarray | None = None
     if body.poses is not None:
-        pos = np.array([p.position for p in body.poses], dtype=float)
+        n = len(body.poses)
+        pos = np.array([p.position for p in body.poses], dtype=float).reshape(n, 3)
         quat = np.full((n, 4), np.nan)
         for i, p in enumerate(body.poses):
             if p.orientation is not None:
                 quat[i] = p.orientation
         given = ~np.isnan(quat[:, 0])
-        quat[given] = quaternions_checked(
-            quat[given], "poses.{}.orientation", np.flatnonzero(given)
-        )
-    else:
-        pos = np.array(body.positions, dtype=float)
-        if body.orientations is not None:
-            if len(body.orientations) != n:
-                raise InvalidInputError(
-                    f"expected {n} orientations (one per position), got {len(body.orientations)}",
-                    "orientations",
-                )
-            quat = quaternions_checked(np.array(body.orientations, dtype=float), "orientations.{}")
-    m = await _map_for(request, reg, robot_id, body.map_id)
+        if given.any():
+            rows = np.flatnonzero(given)
+            quat[given] = quaternions_checked(quat[given], "poses.{}.orientation", rows)
+        return _check_query(body.map_id, pos, quat, "poses", limit)
+    pos = np.array(body.positions, dtype=float).reshape(len(body.positions), 3)
+    quat = None if body.orientations is None else np.array(body.orientations, dtype=float)
+    return _check_query(body.map_id, pos, quat, "positions", limit)
+
+
+def _check_query(
+    map_id: str, pos: np.ndarray, quat: np.ndarray | None, field: str, limit: int
+) -> tuple[str, np.ndarray, np.ndarray | None]:
+    n = pos.shape[0]
+    if n == 0:
+        raise InvalidInputError("give at least one pose", field)
+    if n > limit:
+        raise InvalidInputError(f"{n} poses exceed the limit of {limit}", field)
+    if field == "positions" and quat is not None:
+        if quat.shape[0] != n:
+            raise InvalidInputError(
+                f"expected {n} orientations (one per position), got {quat.shape[0]}",
+                "orientations",
+            )
+        quat = quaternions_checked(quat.reshape(n, 4), "orientations.{}")
+    return map_id, pos, quat
+
+
+@router.post(
+    "/query",
+    operation_id="query_reachability",
+    response_model=QueryResponse,
+    responses={**ERRORS, 409: {"description": "The map belongs to an older robot model."}},
+    openapi_extra=inline_body_schema(QueryRequest),
+)
+async def query_reachability(
+    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+) -> ORJSONResponse:
+    """Look poses up in a map: O(1) each. Outside the map's box → not reachable.
+
+    Give ``poses`` (objects; orientation optional per pose) or the compact ``positions``
+    (N×3) with optional ``orientations`` (N×4); a pose without orientation asks "reachable
+    with any orientation" (the best over the voxel's bins).
+    """
+    raw = await request.body()
+    limit = request.app.state.settings.max_batch
+    map_id, pos, quat = await offload(_query_arrays, raw, limit)
+    m = await _map_for(request, reg, robot_id, map_id)
     reach, val, ok = m.query(pos, quat)
     return ORJSONResponse(
         {
-            "map_id": body.map_id,
+            "map_id": map_id,
             "reachable": reach,
             "manipulability": [None if np.isnan(v) else float(v) for v in val],
             "in_bounds": ok,

@@ -148,3 +148,17 @@ def test_batch_limit(client, app):
 def test_unknown_robot(client):
     r = client.post("/robots/nope/manipulability", json={})
     assert r.status_code == 404 and r.json()["field"] == "robot_id"
+
+
+def test_batch_body_errors(client):
+    url = "/robots/ur5/manipulability/batch"
+    r = client.post(url, content=b"{not json", headers={"content-type": "application/json"})
+    assert r.status_code == 400 and r.json()["field"] == "body"
+    r = client.post(url, json={"configurations": [[True, 0, 0, 0, 0, 0]]})
+    assert r.status_code == 422 and r.json()["field"] == "configurations.0.0"
+    r = client.post(url, json={"configurations": [Q_UR5], "part": "nope"})
+    assert r.status_code == 422 and r.json()["field"] == "part"
+    r = client.post(url, json=[1, 2])
+    assert r.status_code == 422
+    r = client.post(url, json={"configurations": [Q_UR5], "rows": ["vx", "vy"], "frame": "x"})
+    assert r.status_code == 404 and r.json()["field"] == "frame"

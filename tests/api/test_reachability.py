@@ -308,3 +308,16 @@ def test_bad_queries_and_unknown_ids(pc, app):
         assert r.status_code == 422 and r.json()["field"] == field, params
     r = pc.get(f"{BASE}/maps/{mid}/slice.png", params={"z": 0, "scale": 0})
     assert r.status_code == 422 and r.json()["field"] == "scale"
+
+
+def test_query_body_errors(pc):
+    j = build(pc, dict(PLANAR_BUILD, samples=2000))
+    url = f"{BASE}/query"
+    r = pc.post(url, content=b"{oops", headers={"content-type": "application/json"})
+    assert r.status_code == 400 and r.json()["field"] == "body"
+    r = pc.post(url, json={"map_id": j["map_id"], "positions": [[0, 0, True]]})
+    assert r.status_code == 422 and r.json()["field"] == "positions.0.2"
+    r = pc.post(url, json={"positions": [[0, 0, 0]]})
+    assert r.status_code == 422 and r.json()["field"] == "map_id"
+    r = pc.post(url, json={"map_id": j["map_id"], "positions": [[0, 0, 0]], "extra": 1})
+    assert r.status_code == 422 and r.json()["field"] == "extra"
