@@ -499,7 +499,11 @@ class Registry:
         self._user_models: dict[str, tuple[str, RobotModel]] = {}
         self._user_token: tuple[bytes, int] | None = None
         if self.store is not None:
-            removed = self.store.recover()
+            try:
+                removed = self.store.recover()
+            except OSError as exc:  # e.g. a read-only data directory: reads keep working
+                log.error("could not clean %s: %s", self.store.root, exc)
+                removed = 0
             if removed:
                 log.warning("removed %d incomplete entries from %s", removed, self.store.root)
 

@@ -9,13 +9,18 @@ import json
 import math
 from pathlib import Path
 
+import httpx
 import numpy as np
 import pytest
 import yaml
 from fastapi.testclient import TestClient
+from hypothesis import HealthCheck, given
+from hypothesis import settings as hsettings
+from hypothesis import strategies as st
 
 from app.main import create_app
 from app.settings import Settings
+from tests.live import serve
 
 TABLE = {
     "name": "tiny",
@@ -369,3 +374,77 @@ def test_upload_limit_413(tmp_path: Path) -> None:
         problem(resp, 413, "body")
         assert c.post("/robots/dh", json=TABLE).status_code == 201  # small bodies pass
     assert snapshot(settings.data_dir / "robots")[-1].startswith("tiny")
+
+
+def test_two_server_processes_share_the_data_dir(tmp_path: Path) -> None:
+    """Two uvicorn processes (as two workers are): import via A, GET via B; delete, 404."""
+    data = tmp_path / "data"
+    with serve(data) as a, serve(data) as b:
+        assert httpx.get(f"{b}/robots/tiny").status_code == 404  # B looked before
+        assert httpx.post(f"{a}/robots/dh", json=TABLE).status_code == 201
+        q = {"q": [0.3, -0.2, 0.1]}
+        via_b = httpx.post(f"{b}/robots/tiny/fk", json=q)
+        assert via_b.status_code == 200
+        assert via_b.json() == httpx.post(f"{a}/robots/tiny/fk", json=q).json()
+        assert httpx.delete(f"{a}/robots/tiny").status_code == 204
+        assert httpx.post(f"{b}/robots/tiny/fk", json=q).status_code == 404
+        assert httpx.get(f"{b}/robots/tiny").status_code == 404
+
+
+_json_values = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=8),
+    lambda inner: (
+        st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=6), inner, max_size=3)
+    ),
+    max_leaves=6,
+)
+_numbers = st.floats(allow_nan=False, allow_infinity=False, width=64) | st.integers(-1000, 1000)
+_row = st.fixed_dictionaries(
+    {"a": _numbers, "alpha": _numbers, "d": _numbers, "theta": _numbers},
+    optional={
+        "type": st.sampled_from(["revolute", "prismatic", "continuous", "ball", 3]),
+        "lower": _numbers | _json_values,
+        "upper": _numbers | _json_values,
+        "name": st.text(max_size=10) | _json_values,
+        "velocity": _numbers,
+    },
+)
+_doc = st.fixed_dictionaries(
+    {
+        "name": st.just("fuzz"),
+        "convention": st.sampled_from(["standard", "modified", "dh"]),
+        "joints": st.lists(_row | _json_values, max_size=4),
+    },
+    optional={
+        "units": st.fixed_dictionaries(
+            {}, optional={"length": st.sampled_from(["m", "mm", "ft"]), "angle": _json_values}
+        ),
+        "base": _json_values,
+        "tool": st.fixed_dictionaries({"xyz": st.lists(_numbers, max_size=4)}),
+    },
+)
+
+
+_FUZZ: dict[str, tuple[TestClient, Path]] = {}
+
+
+def _fuzz_client(factory: pytest.TempPathFactory) -> tuple[TestClient, Path]:
+    """One app for every example (building an app per example is slow)."""
+    if "client" not in _FUZZ:
+        data = factory.mktemp("fuzz")
+        app = create_app(Settings(data_dir=data))
+        _FUZZ["client"] = (TestClient(app, raise_server_exceptions=False), data)
+    return _FUZZ["client"]
+
+
+@hsettings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(doc=_doc)
+def test_fuzzed_tables_never_500(tmp_path_factory: pytest.TempPathFactory, doc: dict) -> None:
+    c, data = _fuzz_client(tmp_path_factory)
+    raw = json.dumps(doc)
+    resp = c.post("/robots/dh", content=raw, headers={"content-type": "application/json"})
+    assert resp.status_code in (201, 400, 422), resp.text
+    if resp.status_code == 201:
+        assert c.get("/robots/fuzz/dh").status_code == 200
+        assert c.delete("/robots/fuzz").status_code == 204
+    assert not (data / "robots" / "fuzz").exists()
