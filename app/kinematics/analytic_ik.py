@@ -24,11 +24,34 @@ With the DH table of DOMAIN.md (β = 0, s = 1) this is θ2 = ±acos(c2) and
 θ1 = atan2(y, x) − atan2(l2 sin θ2, l1 + l2 cos θ2). Each angle is moved by a multiple of 2π
 into the joint's limits when possible (closest to the seed); continuous joints are wrapped
 to (−π, π].
+
+UR-type 6R arms (three parallel axes, intersecting last two)
+------------------------------------------------------------
+Six revolute joints whose axes 2, 3, 4 are parallel (direction h) and whose axes 5 and 6
+intersect (the UR family). With the product of exponentials at q = 0, T(q) = E1⋯E6·M
+(E_i a rotation by q_i about axis i: direction ω_i through p_i), R_d = R_t·R_Mᵀ, the point
+c0 where axes 5 and 6 meet (moved to c_d = T_t·M⁻¹·c0 by the target), every solution
+follows from Paden–Kahan subproblems (SP1: rotate a onto b about k; SP4: hᵀ Rot(k, θ) p = d):
+
+1. q1 (SP4, ≤ 2 solutions, shoulder left/right): rotations about axes parallel to h keep
+   the h-component, so (Rot(ω1, q1) h)ᵀ (c_d − p1) = hᵀ (c0 − p1).
+2. q5 (SP4, ≤ 2, wrist up/down): hᵀ Rot(ω5, q5) ω6 = hᵀ R1ᵀ R_d ω6, since
+   R1ᵀ R_d = Rot(h, θ) R5 R6 with θ = q2 + q3 + q4 and Rot(h, θ)ᵀ h = h.
+3. q6 (SP1): Rot(ω6, q6) (R_dᵀ R1 h) = R5ᵀ h.
+4. θ (SP1 about h): Rot(h, θ) = R1ᵀ R_d R6ᵀ R5ᵀ.
+5. q2, q3 (planar 2-link above, ≤ 2, elbow up/down): E2 E3 p4 = E1⁻¹ c_d − Rot(h, θ)(c0 − p4),
+   then q4 = θ − q2 − q3 (signs flipped for antiparallel axes).
+
+Up to 8 candidates, moved into the limits (±2π limits admit two values per angle: the one
+closest to the seed is used), sorted by distance to the seed and verified by FK. Near a
+singularity (wrist: q5 ≈ 0; shoulder: c_d on axis 1; elbow stretched) a subproblem loses
+its solution or becomes ill-conditioned; the numeric solver then takes over.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -143,29 +166,193 @@ def into_limits(q: float, lower: float, upper: float, seed: float) -> float:
     return min(options, key=lambda x: abs(x - seed))
 
 
+def _unit(x: np.ndarray) -> np.ndarray:
+    return x / np.linalg.norm(x)
+
+
+def _rot(k: np.ndarray, theta: float) -> np.ndarray:
+    """Rotation matrix about unit axis k by theta (Rodrigues)."""
+    return pin.exp3(k * theta)
+
+
+def sp1(k: np.ndarray, a: np.ndarray, b: np.ndarray, K: np.ndarray | None = None) -> float:
+    """Subproblem 1: the angle θ with Rot(k, θ)·a ∥ b in the plane normal to k.
+
+    With a⊥, b⊥ the projections on that plane: θ = atan2(k·(a⊥ × b⊥), a⊥·b⊥), where
+    k·(a⊥ × b⊥) = k·(a × b) = (k × a)·b and a⊥·b⊥ = a·b − (k·a)(k·b). ``K`` is the
+    cross-product matrix of k (precomputed by callers; np.cross is slow on 3-vectors).
+    """
+    if K is None:
+        K = pin.skew(k)
+    return math.atan2((K @ a) @ b, a @ b - (k @ a) * (k @ b))
+
+
+def sp4(
+    h: np.ndarray, k: np.ndarray, p: np.ndarray, d: float, K: np.ndarray | None = None
+) -> list[float]:
+    """Subproblem 4: all θ with hᵀ·Rot(k, θ)·p = d (0, 1 or 2 angles).
+
+    Rot(k, θ)p = (k·p)k + cos θ (p − (k·p)k) + sin θ (k × p), so with
+    A = hᵀ(p − (k·p)k), B = hᵀ(k × p), C = (k·p)(h·k): A cos θ + B sin θ = d − C, i.e.
+    θ = atan2(B, A) ± acos((d − C)/√(A² + B²)) when the right side is in [−1, 1].
+    """
+    if K is None:
+        K = pin.skew(k)
+    kp = K @ p
+    par = (k @ p) * k
+    A = h @ (p - par)
+    B = h @ kp
+    C = h @ par
+    r = math.hypot(A, B)
+    if r < 1e-12:
+        return []
+    x = (d - C) / r
+    if abs(x) > 1.0 + 1e-9:
+        return []
+    x = min(1.0, max(-1.0, x))
+    phi = math.atan2(B, A)
+    a = math.acos(x)
+    return [phi + a] if a < 1e-12 else [phi + a, phi - a]
+
+
+@dataclass(frozen=True, slots=True)
+class URType:
+    """Zero-configuration geometry of a UR-type 6R chain (world frame)."""
+
+    w: np.ndarray  # (6, 3) axis directions ω_i
+    p: np.ndarray  # (6, 3) points on the axes
+    h: np.ndarray  # common direction of axes 2-4 (= ω2)
+    s: np.ndarray  # (6,) +1/−1: ω_i = s_i h for i = 2, 3, 4 (1 elsewhere)
+    c0: np.ndarray  # intersection of axes 5 and 6
+    K: np.ndarray  # (6, 3, 3) cross-product matrices of the ω_i
+    M: pin.SE3  # frame placement at q = 0
+    arm: Planar2  # the 2-link arm of axes 2, 3 with tip on axis 4
+
+
+def _line_intersection(p1, w1, p2, w2) -> np.ndarray | None:
+    """The common point of two lines, or None if they are parallel or skew."""
+    n = np.cross(w1, w2)
+    nn = n @ n
+    if nn < 1e-12:
+        return None
+    d = p2 - p1
+    if abs(d @ n) / math.sqrt(nn) > 1e-9:
+        return None
+    t1 = np.cross(d, w2) @ n / nn
+    return p1 + t1 * w1
+
+
+def ur_geometry(robot: RobotModel, active: np.ndarray, frame_id: int) -> URType | None:
+    """The :class:`URType` description of a chain, or ``None`` if it is not one."""
+    if len(active) != 6:
+        return None
+    joints = [robot.joints[i] for i in active]
+    model = robot.model
+    if any(j.type == "prismatic" or model.joints[j.pin_id].nv != 1 for j in joints):
+        return None
+    data = model.createData()
+    pin.forwardKinematics(model, data, robot.to_pin(np.zeros(robot.n)))
+    M = pin.updateFramePlacement(model, data, frame_id).copy()
+    w = np.array([data.oMi[j.pin_id].rotation @ _unit(np.asarray(j.axis, float)) for j in joints])
+    p = np.array([data.oMi[j.pin_id].translation for j in joints])
+    h = w[1]
+    s = np.ones(6)
+    for i in (2, 3):
+        if np.linalg.norm(np.cross(w[i], h)) > _PARALLEL:
+            return None
+        s[i] = float(np.sign(w[i] @ h))
+    if np.linalg.norm(np.cross(w[0], h)) < 1e-6 or np.linalg.norm(np.cross(w[4], h)) < 1e-6:
+        return None
+    c0 = _line_intersection(p[4], w[4], p[5], w[5])
+    if c0 is None:
+        return None
+    helper = np.array([1.0, 0.0, 0.0]) if abs(h[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    u = _unit(np.cross(helper, h))
+    v = np.cross(h, u)
+
+    def proj(x: np.ndarray) -> np.ndarray:
+        d = x - p[1]
+        return np.array([d @ u, d @ v])
+
+    r1 = proj(p[2])
+    r2 = proj(p[3]) - r1
+    if np.hypot(*r1) < 1e-9 or np.hypot(*r2) < 1e-9:
+        return None
+    arm = Planar2(p[1].copy(), u, v, r1, r2, float(s[2]))
+    K = np.array([pin.skew(x) for x in w])
+    return URType(w, p, h, s, c0, K, M, arm)
+
+
+def _nearest_first(angles: list[float], seed: float) -> list[float]:
+    """Angles ordered by their circular distance to ``seed``."""
+    return sorted(angles, key=lambda x: abs(math.remainder(x - seed, 2.0 * math.pi)))
+
+
+def ur_solutions(
+    geo: URType, target: pin.SE3, seed: np.ndarray | None = None
+) -> Iterator[np.ndarray]:
+    """Every closed-form solution (up to 8) of a UR-type chain, angles unwrapped.
+
+    With a ``seed`` (active joints), branches are generated nearest-first (shoulder, then
+    wrist, then elbow), so a caller that needs one solution stops after one branch.
+    """
+    w, p, h, s = geo.w, geo.p, geo.h, geo.s
+    Rd = target.rotation @ geo.M.rotation.T
+    c_d = target.act(geo.M.actInv(geo.c0))
+    u = geo.arm.u
+    c0_p4 = geo.c0 - p[3]
+    K = geo.K
+    q1s = sp4(c_d - p[0], w[0], h, h @ (geo.c0 - p[0]), K[0])
+    if seed is not None:
+        q1s = _nearest_first(q1s, seed[0])
+    for q1 in q1s:
+        R1 = _rot(w[0], q1)
+        R1h = R1 @ h
+        RdT_R1h = Rd.T @ R1h
+        q5s = sp4(h, w[4], w[5], R1h @ Rd @ w[5], K[4])
+        if seed is not None:
+            q5s = _nearest_first(q5s, seed[4])
+        arm_base = p[0] + R1.T @ (c_d - p[0])
+        for q5 in q5s:
+            R5 = _rot(w[4], q5)
+            R5T = R5.T
+            q6 = sp1(w[5], RdT_R1h, R5T @ h, K[5])
+            Rth = R1.T @ Rd @ _rot(w[5], -q6) @ R5T
+            theta = sp1(h, u, Rth @ u, K[1])
+            wrist = arm_base - _rot(h, theta) @ c0_p4
+            elbows = planar2_solutions(geo.arm, wrist)
+            if seed is not None and len(elbows) == 2:
+                elbows.sort(key=lambda e: abs(math.remainder(e[1] - seed[2], 2.0 * math.pi)))
+            for q2, q3 in elbows:
+                q4 = s[3] * (theta - q2 - s[2] * q3)
+                yield np.array([q1, q2, q3, q4, q5, q6])
+
+
 def candidates(
     robot: RobotModel, ch: object, target: pin.SE3, mode: str, seed: np.ndarray
-) -> list[np.ndarray] | None:
+) -> Iterator[np.ndarray] | None:
     """Closed-form candidates for the active joints of ``ch`` (an ``ik.Chain``).
 
-    ``None`` when no closed form applies to this chain and mode; otherwise the list of
-    candidate configurations of the active joints (possibly empty: the closed form proves
-    the target's position unreachable).
+    ``None`` when no closed form applies to this chain and mode; otherwise an iterator over
+    candidate configurations of the active joints, moved into the joint limits, roughly
+    nearest to the seed first (it may be empty: the closed form proves the target
+    unreachable).
     """
-    if mode == "orientation":
-        return None
     active = ch.active  # type: ignore[attr-defined]
-    geo = robot.lazy(
-        f"ik.planar2:{ch.frame}",  # type: ignore[attr-defined]
-        lambda r: planar2_geometry(r, active, ch.frame_id) or False,  # type: ignore[attr-defined]
-    )
-    if geo is False:
-        return None
+    frame, fid = ch.frame, ch.frame_id  # type: ignore[attr-defined]
     lo, hi = robot.lower[active], robot.upper[active]
     s = seed[active]
-    out = []
-    for q1, q2 in planar2_solutions(geo, target.translation):
-        out.append(
-            np.array([into_limits(q1, lo[0], hi[0], s[0]), into_limits(q2, lo[1], hi[1], s[1])])
-        )
-    return out
+    raw: Iterable[np.ndarray] | None = None
+    if mode == "pose":
+        ur = robot.lazy(f"ik.ur:{frame}", lambda r: ur_geometry(r, active, fid) or False)
+        if ur is not False:
+            raw = ur_solutions(ur, target, s)
+    if raw is None and mode != "orientation":
+        geo = robot.lazy(f"ik.planar2:{frame}", lambda r: planar2_geometry(r, active, fid) or False)
+        if geo is not False:
+            raw = [np.array(q) for q in planar2_solutions(geo, target.translation)]
+    if raw is None:
+        return None
+    return (
+        np.array([into_limits(float(x), lo[i], hi[i], s[i]) for i, x in enumerate(q)]) for q in raw
+    )

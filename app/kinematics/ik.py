@@ -461,13 +461,15 @@ class _Search:
         qp = robot.to_pin(self.q_seed)
         qa = q_ref.copy()
         e = np.empty(6)
-        Je = np.empty((6, ch.k))
-        jv, jw = Je[:3], Je[3:]
+        ev, ew = e[:3], e[3:]
+        L = np.eye(6)  # blockdiag(I, Jlog3(R_e)ᵀ): J_e = L · J_LWA (active columns)
+        Lw = L[3:, 3:]
         attempt_iters = 0
         best_attempt = math.inf
         stall = 0
         it = self.iterations
         best_energy, best_qa = self.best_energy, None
+        sub = np.subtract
         try:
             while True:
                 if it >= cap:
@@ -489,16 +491,13 @@ class _Search:
                 attempt_iters += 1
                 # e = [p − p_t; log3(R R_tᵀ)] in world axes
                 Re = T.rotation @ RtT
-                ep = T.translation - pt
-                eR = log3(Re)
-                ep2 = ep @ ep
-                er2 = eR @ eR
-                e[:3] = ep
-                e[3:] = eR
+                sub(T.translation, pt, out=ev)
+                ew[:] = log3(Re)
+                energy = e @ e
+                ep2 = ev @ ev
                 # ---- converged on the checked components?
                 if full_pose:
-                    energy = ep2 + er2
-                    conv = ep2 <= tol_p2 and er2 <= tol_r2
+                    conv = ep2 <= tol_p2 and energy - ep2 <= tol_r2
                 else:
                     conv = True
                     if check_pos:
@@ -532,9 +531,8 @@ class _Search:
                         attempt_iters, best_attempt, stall = 0, math.inf, 0
                         continue
                 # ---- damped least-squares step on the task rows
-                J = gfj(model, data, fid, LWA)
-                jv[:] = J[:3, cols]
-                jw[:] = jlog3(Re).T @ J[3:, cols]
+                Lw[:] = jlog3(Re).T
+                Je = L @ gfj(model, data, fid, LWA)[:, cols]
                 if full_pose:
                     Jt, et = Je, e
                 else:
@@ -551,37 +549,30 @@ class _Search:
                 else:
                     dq = Jt.T @ posv(A, et)[1]
                     dq *= -1.0
-                q_new = qa + dq
-                low, high = q_new < lo, q_new > hi
-                if low.any() or high.any():
+                n2 = dq @ dq
+                if n2 > max_step2:
+                    dq *= max_step / math.sqrt(n2)
+                q_old = qa
+                q_new = q_old + dq
+                if has_cont:
+                    q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
+                qa = np.minimum(np.maximum(q_new, lo), hi)
+                if clamp and (qa != q_new).any():
                     # Joints already at a limit and pushed further are locked for this step
                     # (their columns removed) so the other joints take over their share.
-                    locked = (low & (qa <= lo)) | (high & (qa >= hi))
-                    if clamp and locked.any() and not locked.all():
+                    locked = ((q_new < lo) & (q_old <= lo)) | ((q_new > hi) & (q_old >= hi))
+                    if locked.any() and not locked.all():
                         Jl = Jt * ~locked
                         A = Jl @ Jl.T
                         A += lam2 * eye
                         dq = Jl.T @ posv(A, et)[1]
-                        dq *= -1.0
-                        q_new = qa + dq
-                    n2 = dq @ dq
-                    if n2 > max_step2:
-                        q_new = qa + dq * (max_step / math.sqrt(n2))
-                    if has_cont:
-                        q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
-                    qa = np.minimum(np.maximum(q_new, lo), hi)
-                else:
-                    n2 = dq @ dq
-                    if n2 > max_step2:
-                        q_new = qa + dq * (max_step / math.sqrt(n2))
+                        n2 = dq @ dq
+                        if n2 > max_step2:
+                            dq *= max_step / math.sqrt(n2)
+                        q_new = q_old - dq
                         if has_cont:
                             q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
                         qa = np.minimum(np.maximum(q_new, lo), hi)
-                    elif has_cont:
-                        q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
-                        qa = q_new
-                    else:
-                        qa = q_new
         finally:
             self.iterations = it
             if best_qa is not None and best_energy < self.best_energy:

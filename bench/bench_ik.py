@@ -1,0 +1,204 @@
+"""IK benchmark with TRAC-IK's protocol, in process and over HTTP.
+
+Protocol (Beeson & Ames, TRAC-IK, 2015): for each robot, N joint configurations drawn
+uniformly within the joint limits of the chain's joints; the target is the FK pose of each;
+the seed is the middle of the joint limits; full 6-D pose; success = position error
+≤ 1e-5 m and orientation error ≤ 1e-5 rad within 5 ms. Reported: solve rate and the
+mean / p50 / p99 wall-clock solve time (successes and failures alike, failures count their
+full budget), plus the mean CPU time of the solving thread (less sensitive to other load).
+
+Over HTTP, a real uvicorn server (1 worker) is started on loopback and a few hundred
+POST /robots/{id}/ik requests are sent sequentially on one keep-alive connection; the
+time is the client's round trip.
+
+Environment: ``DENAVIT_BENCH_IK_N`` (targets per robot in process, default 10000),
+``DENAVIT_BENCH_IK_HTTP`` (requests per robot over HTTP, default 300),
+``DENAVIT_BENCH_IK_ROBOTS`` (comma-separated ``id`` or ``id:frame``; default panda:panda_link8,
+ur5:tool0 and every DH robot of the registry with its ``tool`` frame).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+import httpx
+import numpy as np
+import pinocchio as pin
+
+from app.kinematics import ik
+from app.kinematics.models import RobotModel
+from app.kinematics.rotations import matrix_to_quaternion
+from app.registry import Registry
+
+TOL = 1e-5
+BUDGET_MS = 5.0
+
+
+def _chains(reg: Registry) -> list[tuple[str, str]]:
+    spec = os.environ.get("DENAVIT_BENCH_IK_ROBOTS")
+    if spec:
+        out = []
+        for item in spec.split(","):
+            rid, _, frame = item.strip().partition(":")
+            out.append((rid, frame or reg.get(rid).ee_frame))
+        return out
+    out = [("panda", "panda_link8"), ("ur5", "tool0")]
+    for s in reg.summaries():
+        if s.source == "dh":
+            out.append((s.id, reg.get(s.id).ee_frame))
+    return out
+
+
+def targets(robot: RobotModel, frame: str, n: int, seed: int = 2015) -> list[pin.SE3]:
+    """FK poses of n configurations uniform within the limits of the frame's joints."""
+    ch = ik.chain(robot, frame)
+    rng = np.random.default_rng(seed)
+    q = np.tile(robot.mid_range(), (n, 1))
+    q[:, ch.active] = rng.uniform(ch.sample_lo, ch.sample_hi, (n, ch.k))
+    model, data = robot.model, robot.data
+    out = []
+    for row in q:
+        pin.forwardKinematics(model, data, robot.to_pin(row))
+        out.append(pin.updateFramePlacement(model, data, ch.frame_id).copy())
+    return out
+
+
+def _verify(robot: RobotModel, frame: str, q: np.ndarray, target: pin.SE3) -> bool:
+    """Independent success check: FK of the answer against the target, and the limits."""
+    if robot.limit_violations(q):
+        return False
+    model, data = robot.model, robot.data
+    pin.forwardKinematics(model, data, robot.to_pin(q))
+    T = pin.updateFramePlacement(model, data, robot.frame_id(frame))
+    dp = float(np.linalg.norm(T.translation - target.translation))
+    dr = float(np.linalg.norm(pin.log3(T.rotation.T @ target.rotation)))
+    return dp <= TOL and dr <= TOL
+
+
+def _stats(times_ms: np.ndarray) -> tuple[float, float, float]:
+    return float(times_ms.mean()), float(np.median(times_ms)), float(np.percentile(times_ms, 99))
+
+
+def in_process(reg: Registry, n: int) -> list[tuple]:
+    rows = []
+    for rid, frame in _chains(reg):
+        robot = reg.get(rid)
+        goals = targets(robot, frame, n)
+        ik.solve(robot, frame, goals[0])  # warm-up: chain and closed-form set-up
+        wall = np.empty(n)
+        cpu = np.empty(n)
+        ok = 0
+        methods: dict[str, int] = {}
+        perf, thread_time = time.perf_counter, time.thread_time
+        for i, T in enumerate(goals):
+            c0 = thread_time()
+            t0 = perf()
+            res = ik.solve(robot, frame, T, timeout_ms=BUDGET_MS)
+            wall[i] = perf() - t0
+            cpu[i] = thread_time() - c0
+            if res.success and wall[i] <= BUDGET_MS * 1e-3:
+                ok += _verify(robot, frame, res.q, T)
+            methods[res.method] = methods.get(res.method, 0) + 1
+        mean, p50, p99 = _stats(wall * 1e3)
+        method = ", ".join(f"{k} {v}" for k, v in sorted(methods.items()))
+        rows.append((rid, frame, robot.n, n, ok / n, mean, p50, p99, cpu.mean() * 1e3, method))
+        print(f"  {rid}: {100 * ok / n:.2f}% mean {mean:.3f} ms", file=sys.stderr, flush=True)
+    return rows
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def over_http(reg: Registry, n: int) -> list[tuple]:
+    port = _free_port()
+    rows = []
+    with tempfile.TemporaryDirectory() as data_dir:
+        env = {**os.environ, "DENAVIT_DATA_DIR": data_dir, "DENAVIT_LOG_LEVEL": "warning"}
+        server = subprocess.Popen(
+            [sys.executable, "-m", "uvicorn", "app.main:app", "--host", "127.0.0.1",
+             "--port", str(port), "--log-level", "warning", "--no-access-log"],
+            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+        )  # fmt: skip
+        try:
+            base = f"http://127.0.0.1:{port}"
+            deadline = time.time() + 60
+            while True:
+                try:
+                    httpx.get(base + "/health", timeout=1.0)
+                    break
+                except httpx.HTTPError:
+                    if time.time() > deadline or server.poll() is not None:
+                        raise RuntimeError("uvicorn did not start") from None
+                    time.sleep(0.2)
+            with httpx.Client(base_url=base, timeout=30.0) as client:
+                for rid, frame in _chains(reg):
+                    robot = reg.get(rid)
+                    goals = targets(robot, frame, n, seed=7)
+                    bodies = [
+                        {
+                            "frame": frame,
+                            "target": {
+                                "position": T.translation.tolist(),
+                                "orientation": matrix_to_quaternion(T.rotation).tolist(),
+                            },
+                        }
+                        for T in goals
+                    ]
+                    client.post(f"/robots/{rid}/ik", json=bodies[0]).raise_for_status()
+                    wall = np.empty(n)
+                    server_ms = np.empty(n)
+                    ok = 0
+                    for i, (body, T) in enumerate(zip(bodies, goals, strict=True)):
+                        t0 = time.perf_counter()
+                        r = client.post(f"/robots/{rid}/ik", json=body)
+                        wall[i] = time.perf_counter() - t0
+                        r.raise_for_status()
+                        out = r.json()
+                        server_ms[i] = out["solve_time_ms"]
+                        if out["success"] and out["solve_time_ms"] <= BUDGET_MS:
+                            ok += _verify(robot, frame, np.array(out["q"]), T)
+                    mean, p50, p99 = _stats(wall * 1e3)
+                    rows.append((rid, n, ok / n, mean, p50, p99, float(server_ms.mean())))
+        finally:
+            server.terminate()
+            server.wait(10)
+    return rows
+
+
+def main() -> None:
+    n = int(os.environ.get("DENAVIT_BENCH_IK_N", "10000"))
+    n_http = int(os.environ.get("DENAVIT_BENCH_IK_HTTP", "300"))
+    reg = Registry()
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else math.nan
+    print(
+        f"machine: {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; "
+        f"load average {load:.1f} at start"
+    )
+    print(f"\n### In process: {n} targets per robot, 6-D pose, seed mid-range, 5 ms budget\n")
+    print("| robot | frame | joints | targets | solve rate | mean (ms) | p50 (ms) | p99 (ms) "
+          "| mean CPU (ms) | method |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for rid, frame, joints, cnt, rate, mean, p50, p99, cpu, method in in_process(reg, n):
+        print(f"| {rid} | {frame} | {joints} | {cnt} | {100 * rate:.2f}% | {mean:.3f} | "
+              f"{p50:.3f} | {p99:.3f} | {cpu:.3f} | {method} |")  # fmt: skip
+    if n_http > 0:
+        print(f"\n### Over HTTP: {n_http} requests per robot, uvicorn 1 worker, loopback\n")
+        print("| robot | requests | solve rate | mean round trip (ms) | p50 (ms) | p99 (ms) "
+              "| mean solve_time_ms (server) |")  # fmt: skip
+        print("|---|---|---|---|---|---|---|")
+        for rid, cnt, rate, mean, p50, p99, server in over_http(reg, n_http):
+            print(f"| {rid} | {cnt} | {100 * rate:.2f}% | {mean:.3f} | {p50:.3f} | "
+                  f"{p99:.3f} | {server:.3f} |")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
