@@ -52,6 +52,7 @@ Threads
 -------
 The Pinocchio/coal models are immutable once built and cached per robot
 (``RobotModel.lazy``); the scratch space (``pin.Data``, ``pin.GeometryData``) is per thread.
+GJK warm starts are off, so an answer never depends on what the thread checked before.
 """
 
 from __future__ import annotations
