@@ -4,6 +4,7 @@ The one entry point of ``make run`` and of the Docker image::
 
     python -m app               # serve (host, port, workers... from DENAVIT_* variables)
     python -m app healthcheck   # exit 0 if GET /health on this host's port answers "ok"
+    python -m app openapi PATH  # write the OpenAPI schema the app serves (make openapi)
 
 Server options and why (measured in docs/benchmarks.md, "Forward kinematics over HTTP"):
 uvloop event loop and httptools parser (the fastest uvicorn pair), uvicorn's access log off
@@ -14,9 +15,11 @@ listen backlog of 2048 for bursts.
 
 from __future__ import annotations
 
+import json
 import sys
 import urllib.error
 import urllib.request
+from pathlib import Path
 from typing import Any
 
 import orjson
@@ -24,7 +27,7 @@ import orjson
 from app.observability import logging_config
 from app.settings import Settings, get_settings
 
-USAGE = "usage: python -m app [healthcheck]"
+USAGE = "usage: python -m app [healthcheck | openapi PATH]"
 
 
 def server_options(settings: Settings) -> dict[str, Any]:
@@ -78,14 +81,31 @@ def healthcheck(settings: Settings, timeout: float = 3.0) -> int:
     return 0
 
 
+def openapi_text() -> str:
+    """The OpenAPI schema the app serves, as indented JSON (the form of docs/openapi.json)."""
+    from app.main import app
+
+    return json.dumps(app.openapi(), indent=2, ensure_ascii=False) + "\n"
+
+
+def write_openapi(path: Path) -> None:
+    """Write :func:`openapi_text` to ``path`` (atomically)."""
+    from app.store import atomic_write_bytes
+
+    atomic_write_bytes(path, openapi_text().encode())
+
+
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
-    if args not in ([], ["healthcheck"]):
+    if not (args in ([], ["healthcheck"]) or (len(args) == 2 and args[0] == "openapi")):
         print(USAGE, file=sys.stderr)
         return 2
     settings = get_settings()
     if args == ["healthcheck"]:
         return healthcheck(settings)
+    if args and args[0] == "openapi":
+        write_openapi(Path(args[1]))
+        return 0
     serve(settings)
     return 0
 

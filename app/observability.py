@@ -38,6 +38,8 @@ from typing import Any
 import orjson
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
+from app.api.errors import problem
+
 #: The id of the request being handled (``None`` outside requests).
 REQUEST_ID: ContextVar[str | None] = ContextVar("denavit_request_id", default=None)
 
@@ -327,7 +329,7 @@ class ObservabilityMiddleware:
             request_id = os.urandom(12).hex()
         token = REQUEST_ID.set(request_id)
         id_header = (b"x-request-id", request_id.encode("latin-1"))
-        status = 500
+        status = 0
 
         async def send_with_id(message: Message) -> None:
             nonlocal status
@@ -338,8 +340,19 @@ class ObservabilityMiddleware:
 
         metrics = self.metrics
         metrics.in_flight += 1
+        failed = True
         try:
             await self.app(scope, receive, send_with_id)
+        except Exception:
+            # Answer the 500 here, so it carries the request id; the exception goes on to
+            # the server-error handler (which logs it, with the id: REQUEST_ID stays set).
+            if not status:
+                await problem(500, "internal error", instance=scope["path"])(
+                    scope, receive, send_with_id
+                )
+            raise
+        else:
+            failed = False
         finally:
             metrics.in_flight -= 1
             elapsed = time.perf_counter() - start
@@ -361,4 +374,5 @@ class ObservabilityMiddleware:
                         "duration_ms": round(elapsed * 1000.0, 3),
                     },
                 )
-            REQUEST_ID.reset(token)
+            if not failed:
+                REQUEST_ID.reset(token)

@@ -108,12 +108,16 @@ class Settings(BaseSettings):
             else:
                 value = [part.strip() for part in text.split(",") if part.strip()]
         if isinstance(value, list):
+            origins = []
             for origin in value:
+                if isinstance(origin, str):
+                    origin = origin.strip().rstrip("/") or origin
                 if not isinstance(origin, str) or not (origin == "*" or _ORIGIN.match(origin)):
                     raise ValueError(
                         f"{origin!r} is not an origin like https://example.org (or '*')"
                     )
-            value = [o.rstrip("/") for o in value]
+                origins.append(origin)
+            value = origins
         return value
 
 

@@ -91,9 +91,9 @@ def check_data_dir(data_dir: Path) -> str:
 
 
 def check_catalog(registry: Registry) -> str:
-    """``"ok"`` if the registry lists robots and every catalog URDF file exists."""
+    """``"ok"`` if the built-in catalog has robots and every one of its URDF files exists."""
     try:
-        if not registry.summaries():
+        if not registry.catalog:
             return "the robot catalog is empty"
         missing = [e.id for e in registry.catalog.values() if not e.urdf_path.is_file()]
     except (OSError, RuntimeError) as exc:
