@@ -173,6 +173,39 @@ def _z_to(axis: np.ndarray) -> np.ndarray:
     return pin.exp3(v / np.linalg.norm(v) * math.acos(max(-1.0, min(1.0, c))))
 
 
+#: Constant coefficients smaller than this are treated as 0 (URDF origins are mostly
+#: axis-aligned, so most of a fixed rotation's entries are 0 or ±1 up to rounding).
+_ZERO = 1e-15
+
+
+def _accumulate(P: np.ndarray, t: np.ndarray, M: np.ndarray) -> None:
+    """P += Σ_j t_j·M[j] in place (P (3, N), M (3 columns, 3, N)); no BLAS: small products
+    would otherwise start OpenBLAS threads that fight the worker processes."""
+    for j in range(3):
+        c = float(t[j])
+        if abs(c) > _ZERO:
+            P += c * M[j]
+
+
+def _rotate_columns(M: np.ndarray, C: np.ndarray) -> np.ndarray:
+    """Columns of R·C from the columns of R: new column k = Σ_j C[j, k]·M[j]."""
+    out = np.empty_like(M)
+    for k in range(3):
+        first = True
+        for j in range(3):
+            c = float(C[j, k])
+            if abs(c) <= _ZERO:
+                continue
+            if first:
+                np.multiply(M[j], c, out=out[k])
+                first = False
+            else:
+                out[k] += c * M[j]
+        if first:
+            out[k] = 0.0
+    return out
+
+
 @dataclass(frozen=True)
 class _Step:
     C: np.ndarray  # rotation: previous z-aligned frame → this joint's z-aligned frame
@@ -237,8 +270,8 @@ class ChainJacobian:
         cs = np.cos(QT)
         sn = np.sin(QT)
         for j, s in enumerate(self.steps):
-            P += (s.t @ M.reshape(3, -1)).reshape(3, n)
-            M = (s.C.T @ M.reshape(3, -1)).reshape(3, 3, n)
+            _accumulate(P, s.t, M)
+            M = _rotate_columns(M, s.C)
             J[3:, j] = M[2]
             origins[j] = P
             if s.prismatic:
@@ -250,8 +283,8 @@ class ChainJacobian:
                 M[0] += si * M[1]
                 M[1] *= c
                 M[1] -= si * x
-        P += (self.last_t @ M.reshape(3, -1)).reshape(3, n)
-        M = (self.last_C.T @ M.reshape(3, -1)).reshape(3, 3, n)
+        _accumulate(P, self.last_t, M)
+        M = _rotate_columns(M, self.last_C)
         for j, s in enumerate(self.steps):
             z = J[3:, j]
             if s.prismatic:
