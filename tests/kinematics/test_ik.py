@@ -26,8 +26,13 @@ from app.kinematics.rotations import quaternion_to_matrix
 BUDGET_MS = 500.0
 TOL = 1e-5
 
-# (robot id, frame): the benchmark chains and a DH robot of the registry.
-CHAINS = [("panda", "panda_link8"), ("ur5", "tool0"), ("puma560", "tool")]
+# (robot id, frame, closed forms allowed): the benchmark chains and a DH robot.
+CHAINS = [
+    ("panda", "panda_link8", True),
+    ("ur5", "tool0", True),
+    ("ur5", "tool0", False),
+    ("puma560", "tool", True),
+]
 
 
 def _urdf(robot: RobotModel) -> yourdfpy.URDF:
@@ -73,19 +78,22 @@ def se3(T: np.ndarray) -> pin.SE3:
     return pin.SE3(T[:3, :3].copy(), T[:3, 3].copy())
 
 
-@pytest.mark.parametrize(("robot_id", "frame"), CHAINS)
+@pytest.mark.parametrize(("robot_id", "frame", "analytic"), CHAINS)
 @settings(
     max_examples=12,
     deadline=None,
     suppress_health_check=[HealthCheck.function_scoped_fixture],
 )
 @given(seed=st.integers(0, 2**32 - 1))
-def test_reachable_targets_are_solved(registry, robot_id: str, frame: str, seed: int) -> None:
+def test_reachable_targets_are_solved(
+    registry, robot_id: str, frame: str, analytic: bool, seed: int
+) -> None:
     """FK(IK(FK(q))) matches the target within tolerance, inside the limits (property)."""
     robot = registry.get(robot_id)
     q_true = random_q(robot, np.random.default_rng(seed))
     target = reference_pose(robot, q_true, frame)
-    res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS, analytic=analytic)
+    assert res.method == ("analytic" if analytic and robot_id == "ur5" else "numeric")
     assert res.success, (res.status, res.position_error, res.orientation_error)
     assert res.status == "converged"
     for sol in res.solutions:
@@ -112,6 +120,41 @@ def test_several_distinct_solutions_sorted_by_seed_distance(registry) -> None:
             assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > ik.DISTINCT
         dp, dr = pose_error(reference_pose(robot, res.solutions[a].q, "tool0"), target)
         assert dp <= TOL and dr <= TOL
+
+
+# ------------------------------------------------------------------------ UR-type closed form
+@pytest.mark.parametrize(
+    ("robot_id", "frame"), [("ur5", "tool0"), ("ur10", "tool0"), ("ur5_dh", "tool")]
+)
+def test_ur_closed_form_finds_all_branches(registry, robot_id: str, frame: str) -> None:
+    """A generic UR pose has 8 IK branches; each is exact (yourdfpy) and within limits."""
+    robot = registry.get(robot_id)
+    q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    target = reference_pose(robot, q_true, frame)
+    res = ik.solve(robot, frame, se3(target), num_solutions=8, timeout_ms=BUDGET_MS)
+    assert res.method == "analytic" and len(res.solutions) == 8
+    assert any(np.allclose(s.q, q_true, atol=1e-9) for s in res.solutions)
+    for s in res.solutions:
+        assert within_limits(robot, s.q)
+        dp, dr = pose_error(reference_pose(robot, s.q, frame), target)
+        assert dp <= 1e-10 and dr <= 1e-9
+    # Shoulder, elbow and wrist signs: the 8 branches are pairwise distinct.
+    branches = {
+        (round(math.remainder(s.q[0] - res.solutions[0].q[0], 2 * math.pi), 6),
+         round(s.q[2], 6), round(math.remainder(s.q[4], 2 * math.pi), 6))
+        for s in res.solutions
+    }  # fmt: skip
+    assert len(branches) == 8
+
+
+def test_ur_geometry_is_detected_only_where_it_applies(registry) -> None:
+    from app.kinematics.analytic_ik import ur_geometry
+
+    for rid, expected in [("ur5", True), ("ur5_dh", True), ("puma560", False), ("panda", False)]:
+        robot = registry.get(rid)
+        frame = "panda_link8" if rid == "panda" else robot.ee_frame
+        ch = ik.chain(robot, frame)
+        assert (ur_geometry(robot, ch.active, ch.frame_id) is not None) == expected, rid
 
 
 # ------------------------------------------------------------------ planar 2-link closed form
