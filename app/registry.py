@@ -60,6 +60,12 @@ log = logging.getLogger("denavit.registry")
 DH_EE_FRAME = "tool"
 #: Most rows a user-supplied DH table may have.
 MAX_DH_JOINTS = 64
+#: Largest DH table document (bytes): tables are small, and YAML parsing is slow.
+MAX_DH_DOCUMENT_BYTES = 256 * 1024
+#: Deepest nesting a DH document may have (a table needs 3 levels).
+MAX_DOCUMENT_DEPTH = 16
+#: Most YAML parse events a DH document may have (64 rows of 10 fields need ~1,400).
+MAX_YAML_EVENTS = 20_000
 #: Most joints (of any type) a user-supplied URDF may have.
 MAX_URDF_JOINTS = 512
 #: Joint types a URDF upload may use (the wire has one value per actuated joint).
@@ -203,16 +209,54 @@ class MalformedDocumentError(InvalidInputError):
     """The document is not JSON or YAML at all (the API answers 400)."""
 
 
-def _reject_yaml_aliases(text: str) -> None:
-    """Refuse YAML anchors' aliases (``*name``): they let a small body expand enormously."""
+def _max_bracket_depth(text: str) -> int:
+    """Deepest nesting of ``[``/``{`` in ``text`` (quotes ignored: an upper bound)."""
+    depth = deepest = 0
+    for char in text:
+        if char in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif char in "]}" and depth:
+            depth -= 1
+    return deepest
+
+
+def _screen_yaml(text: str) -> None:
+    """Cheap checks before the (pure-Python, slow) table parser sees a YAML document.
+
+    PyYAML's scanner is quadratic in flow nesting depth and a DH table is small and
+    shallow, so the document is refused when it nests deeper than
+    :data:`MAX_DOCUMENT_DEPTH`, has more than :data:`MAX_YAML_EVENTS` parse events (read with
+    libyaml when available), or uses aliases (``*name``, which let a small body expand
+    enormously).
+    """
+    if _max_bracket_depth(text) > MAX_DOCUMENT_DEPTH:
+        raise MalformedDocumentError(
+            f"invalid YAML: nested deeper than {MAX_DOCUMENT_DEPTH} levels", "body"
+        )
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    depth = events = 0
     try:
-        for event in yaml.parse(text, Loader=yaml.SafeLoader):
+        for event in yaml.parse(text, Loader=loader):
+            events += 1
             if isinstance(event, yaml.AliasEvent):
                 line = event.start_mark.line + 1 if event.start_mark else "?"
                 raise InvalidInputError(
                     f"YAML aliases are not accepted (alias *{event.anchor} on line {line}); "
                     "write the values out",
                     "body",
+                )
+            if isinstance(event, yaml.CollectionStartEvent):
+                depth += 1
+                if depth > MAX_DOCUMENT_DEPTH:
+                    raise MalformedDocumentError(
+                        f"invalid YAML: nested deeper than {MAX_DOCUMENT_DEPTH} levels", "body"
+                    )
+            elif isinstance(event, yaml.CollectionEndEvent):
+                depth -= 1
+            if events > MAX_YAML_EVENTS:
+                raise InvalidInputError(
+                    f"too many YAML values for a DH table (more than {MAX_YAML_EVENTS})", "body"
                 )
     except yaml.YAMLError:
         return  # syntax errors are reported by the table parser, with their position
@@ -231,7 +275,7 @@ def parse_dh_document(text: str, fmt: Literal["json", "yaml"]) -> DHTable:
         A field is wrong; ``field`` is its dotted path (``joints.2.lower``).
     """
     if fmt == "yaml":
-        _reject_yaml_aliases(text)
+        _screen_yaml(text)
     try:
         table = DHTable.from_text(text, fmt)
     except DHError as exc:

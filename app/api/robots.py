@@ -30,7 +30,12 @@ from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
 from app.api.security import require_token
 from app.kinematics.collision import collision_link_pairs
 from app.kinematics.models import RobotModel
-from app.registry import MalformedDocumentError, Registry, parse_dh_document
+from app.registry import (
+    MAX_DH_DOCUMENT_BYTES,
+    MalformedDocumentError,
+    Registry,
+    parse_dh_document,
+)
 from app.store import ID_PATTERN
 
 router = APIRouter(prefix="/robots", tags=["robots"])
@@ -217,12 +222,18 @@ def _created(robot: RobotModel) -> ORJSONResponse:
     )
 
 
-async def _read_upload(request: Request) -> bytes | Response:
-    """The request body, or a 413 problem past ``DENAVIT_MAX_UPLOAD_BYTES`` (never read whole)."""
+async def _read_upload(request: Request, cap: int | None = None) -> bytes | Response:
+    """The request body, or a 413 problem past ``DENAVIT_MAX_UPLOAD_BYTES`` (or ``cap``).
+
+    The body is counted as it streams, so an oversized one is never held whole.
+    """
     limit = request.app.state.settings.max_upload_bytes
+    if cap is not None:
+        limit = min(limit, cap)
     too_large = problem(
         413,
-        f"body: larger than the {limit}-byte limit of robot uploads (DENAVIT_MAX_UPLOAD_BYTES)",
+        f"body: larger than the {limit}-byte limit of this upload (DENAVIT_MAX_UPLOAD_BYTES; "
+        f"DH tables at most {MAX_DH_DOCUMENT_BYTES})",
         kind="body-too-large",
         field="body",
         instance=request.url.path,
@@ -276,9 +287,9 @@ async def import_dh_robot(
     service converts it to URDF (frames ``dh_0`` … ``dh_n`` and ``tool``, the default end
     effector) and answers 201 with the robot's description. 409 if the id is taken by any
     robot; 422 naming the field for a bad table (``joints.2.lower``); YAML aliases are
-    refused.
+    refused; 413 past 256 KiB (or ``DENAVIT_MAX_UPLOAD_BYTES`` if smaller).
     """
-    body = await _read_upload(request)
+    body = await _read_upload(request, MAX_DH_DOCUMENT_BYTES)
     if isinstance(body, Response):
         return body
     media = request.headers.get("content-type", "").split(";")[0].strip().lower()

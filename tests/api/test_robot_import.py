@@ -328,6 +328,8 @@ BAD_YAML = {
     "duplicate key": (YAML_ROWS + "  - {a: 1, a: 2, alpha: 0, d: 0, theta: 0}\n", 400, "body"),
     "scalar document": ("just a string\n", 422, "body"),
     "deep nesting": ("[" * 20000 + "]" * 20000, 400, "body"),
+    "deep block nesting": ("".join(" " * i + "k:\n" for i in range(40)), 400, "body"),
+    "too many values": (YAML_ROWS + "  - {a: 1, alpha: 0, d: 0, theta: 0}\n" * 3000, 422, "body"),
 }
 
 
@@ -357,6 +359,12 @@ def test_malformed_json_is_400(client: TestClient, settings: Settings, raw: str)
 def test_unsupported_media_type(client: TestClient) -> None:
     resp = client.post("/robots/dh", content=b"<x/>", headers={"content-type": "text/xml"})
     problem(resp, 415, "content-type")
+
+
+def test_dh_documents_capped_at_256_kib(client: TestClient, settings: Settings) -> None:
+    text = "# " + "x" * (256 * 1024) + "\n" + ARMAR_YAML
+    problem(yaml_post(client, text), 413, "body")
+    assert snapshot(settings.data_dir / "robots") == []
 
 
 def test_upload_limit_413(tmp_path: Path) -> None:
