@@ -162,3 +162,37 @@ def test_batch_body_errors(client):
     assert r.status_code == 422
     r = client.post(url, json={"configurations": [Q_UR5], "rows": ["vx", "vy"], "frame": "x"})
     assert r.status_code == 404 and r.json()["field"] == "frame"
+
+
+@pytest.mark.parametrize("t2", [0.5, -2.0, 0.0, math.pi])
+def test_registry_planar2_dh_robot(client, t2):
+    """The DH built-in planar2 (l1 = 1.0 m, l2 = 0.8 m, frame tool): det J = l1·l2·sin θ2."""
+    r = client.post("/robots/planar2/manipulability", json={"q": [0.3, t2], "rows": ["vx", "vy"]})
+    assert r.status_code == 200, r.text
+    b = r.json()
+    assert b["frame"] == "tool"
+    assert b["yoshikawa"] == pytest.approx(1.0 * 0.8 * abs(math.sin(t2)), abs=1e-12)
+    assert b["singular"] is (math.sin(t2) ** 2 < 1e-20)
+    if b["singular"]:
+        (u,) = b["lost_directions"]
+        assert abs(abs(u[0] * math.cos(0.3) + u[1] * math.sin(0.3)) - 1) < 1e-12
+
+
+def test_registry_planar3r_task_rows(client):
+    """Planar 3R on (x, y, φ) rows: det J = a1·a2·sin θ2. At θ2 = 0 the joint origins
+    o_i = s_i·d lie on one line (s = 0, a1, a1 + a2); Σc_i J_i = 0 needs Σc_i = 0 and
+    Σc_i s_i = 0, so the null vector is ∝ (s1 − s2, s2 − s0, s0 − s1) = (−a2, a1 + a2, −a1)."""
+    for t2 in (0.7, -1.9):
+        r = client.post(
+            "/robots/planar3r/manipulability",
+            json={"q": [0.2, t2, 0.4], "rows": ["vx", "vy", "wz"]},
+        )
+        assert r.json()["yoshikawa"] == pytest.approx(1.0 * 0.8 * abs(math.sin(t2)), rel=1e-12)
+    b = client.post(
+        "/robots/planar3r/manipulability", json={"q": [0.2, 0.0, 0.4], "rows": ["vx", "vy", "wz"]}
+    ).json()
+    assert b["singular"] is True and b["rank"] == 2
+    assert b["dependent_joints"] == ["joint1", "joint2", "joint3"]
+    (v,) = b["joint_null_space"]
+    expected = np.array([-0.8, 1.8, -1.0]) / np.linalg.norm([-0.8, 1.8, -1.0])
+    assert abs(abs(np.dot(v, expected)) - 1) < 1e-12

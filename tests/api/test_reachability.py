@@ -321,3 +321,31 @@ def test_query_body_errors(pc):
     assert r.status_code == 422 and r.json()["field"] == "map_id"
     r = pc.post(url, json={"map_id": j["map_id"], "positions": [[0, 0, 0]], "extra": 1})
     assert r.status_code == 422 and r.json()["field"] == "extra"
+
+
+def test_registry_planar2_annulus(client):
+    """The DH built-in planar2 (l1 = 1.0, l2 = 0.8): reachable iff 0.2 ≤ r ≤ 1.8."""
+    body = {
+        "voxel_size": 0.05,
+        "bounds": {"min": [-2, -2, -0.025], "max": [2, 2, 0.025]},
+        "orientation_divisions": 0,
+        "samples": 60_000,
+    }
+    r = client.post("/robots/planar2/reachability", json=body)
+    assert r.status_code == 202, r.text
+    job_id = r.json()["job_id"]
+    end = time.monotonic() + 60
+    while (j := client.get(f"/robots/planar2/reachability/jobs/{job_id}").json())["status"] in (
+        "queued",
+        "running",
+    ) and time.monotonic() < end:
+        time.sleep(0.02)
+    assert j["status"] == "done"
+    ang = np.linspace(-math.pi, math.pi, 40, endpoint=False)
+    pts = []
+    for rr in (0.35, 1.0, 1.65, 0.08, 1.92):
+        pts += [[rr * math.cos(a), rr * math.sin(a), 0.0] for a in ang]
+    out = client.post(
+        "/robots/planar2/reachability/query", json={"map_id": j["map_id"], "positions": pts}
+    ).json()["reachable"]
+    assert all(out[:120]) and not any(out[120:])
