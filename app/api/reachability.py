@@ -253,7 +253,7 @@ class QueryResponse(BaseModel):
     operation_id="build_reachability_map",
     status_code=202,
     response_model=JobResponse,
-    responses=ERRORS,
+    responses={**ERRORS, 409: {"description": "Too many builds queued or running."}},
     dependencies=[Depends(require_token)],
 )
 async def build_reachability_map(

@@ -988,13 +988,21 @@ class BuildJobs:
     """Runs builds one after another in a background thread; each build uses ``processes``.
 
     Jobs live in memory (a restart forgets them; finished maps are on disk). At most
-    ``max_jobs`` are kept: finished ones are forgotten first.
+    ``max_active`` builds may be queued or running (more is a conflict) and ``max_jobs``
+    are remembered, finished ones forgotten first.
     """
 
-    def __init__(self, store: MapStore, processes: int | None = None, max_jobs: int = 64):
+    def __init__(
+        self,
+        store: MapStore,
+        processes: int | None = None,
+        max_jobs: int = 64,
+        max_active: int = 8,
+    ):
         self.store = store
         self.processes = processes or default_processes()
         self.max_jobs = max_jobs
+        self.max_active = max_active
         self.jobs: dict[str, BuildJob] = {}
         self._lock = threading.Lock()
         self._queue: queue.Queue[tuple[RobotModel, BuildJob]] = queue.Queue()
@@ -1003,8 +1011,11 @@ class BuildJobs:
     def submit(self, robot: RobotModel, spec: MapSpec) -> BuildJob:
         with self._lock:
             active = [j for j in self.jobs.values() if j.status in ("queued", "running")]
-            if len(active) >= self.max_jobs:
-                raise ConflictError(f"{len(active)} builds are already waiting", "robot_id")
+            if len(active) >= self.max_active:
+                raise ConflictError(
+                    f"{len(active)} builds are already queued or running; cancel one or wait",
+                    "robot_id",
+                )
             for old in [j for j in self.jobs.values() if j not in active]:
                 if len(self.jobs) < self.max_jobs:
                     break

@@ -349,3 +349,14 @@ def test_registry_planar2_annulus(client):
         "/robots/planar2/reachability/query", json={"map_id": j["map_id"], "positions": pts}
     ).json()["reachable"]
     assert all(out[:120]) and not any(out[120:])
+
+
+def test_too_many_active_builds(pc, app):
+    pc.get(f"{BASE}/jobs")  # creates the build queue
+    app.state.reachability[1].max_active = 1
+    first = pc.post(BASE, json=dict(PLANAR_BUILD, samples=200_000_000)).json()["job_id"]
+    r = pc.post(BASE, json=PLANAR_BUILD)
+    assert r.status_code == 409 and r.json()["field"] == "robot_id"
+    pc.delete(f"{BASE}/jobs/{first}")
+    assert wait_job(pc, first)["status"] == "cancelled"
+    assert pc.post(BASE, json=dict(PLANAR_BUILD, samples=1000)).status_code == 202
