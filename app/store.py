@@ -199,6 +199,8 @@ class RobotStore:
 
     def __init__(self, root: Path) -> None:
         self.root = Path(root)
+        self._root_str = str(self.root)
+        self._generation_str = str(self.root / GENERATION_FILE)
 
     # ------------------------------------------------------------------ locking
     @contextlib.contextmanager
@@ -220,14 +222,17 @@ class RobotStore:
         ``stat`` and one small read, cheap enough to check before serving a cached model.
         """
         try:
-            mtime = os.stat(self.root).st_mtime_ns
+            mtime = os.stat(self._root_str).st_mtime_ns
         except FileNotFoundError:
             return (b"", 0)
         try:
-            with open(self.root / GENERATION_FILE, "rb") as f:
-                gen = f.read(64)
+            fd = os.open(self._generation_str, os.O_RDONLY)
         except FileNotFoundError:
-            gen = b""
+            return (b"", mtime)
+        try:
+            gen = os.read(fd, 64)
+        finally:
+            os.close(fd)
         return (gen, mtime)
 
     def load(self, robot_id: str) -> StoredRobot | None:
