@@ -339,18 +339,23 @@ def candidates(
     unreachable).
     """
     active = ch.active  # type: ignore[attr-defined]
-    frame, fid = ch.frame, ch.frame_id  # type: ignore[attr-defined]
+    forms = ch.closed_form  # type: ignore[attr-defined]
+    if forms is None:  # first use: detect once per chain (idempotent, so races are benign)
+        fid = ch.frame_id  # type: ignore[attr-defined]
+        forms = ch.closed_form = (  # type: ignore[attr-defined]
+            ur_geometry(robot, active, fid),
+            planar2_geometry(robot, active, fid),
+        )
+    ur, planar = forms
+    if ur is None and planar is None:
+        return None
     lo, hi = robot.lower[active], robot.upper[active]
     s = seed[active]
     raw: Iterable[np.ndarray] | None = None
-    if mode == "pose":
-        ur = robot.lazy(f"ik.ur:{frame}", lambda r: ur_geometry(r, active, fid) or False)
-        if ur is not False:
-            raw = ur_solutions(ur, target, s)
-    if raw is None and mode != "orientation":
-        geo = robot.lazy(f"ik.planar2:{frame}", lambda r: planar2_geometry(r, active, fid) or False)
-        if geo is not False:
-            raw = [np.array(q) for q in planar2_solutions(geo, target.translation)]
+    if ur is not None and mode == "pose":
+        raw = ur_solutions(ur, target, s)
+    elif planar is not None and mode != "orientation":
+        raw = [np.array(q) for q in planar2_solutions(planar, target.translation)]
     if raw is None:
         return None
     return (

@@ -65,6 +65,7 @@ import numpy as np
 import pinocchio as pin
 from scipy.linalg.lapack import dposv as _posv
 
+from app.kinematics.analytic_ik import candidates
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
 
@@ -92,12 +93,18 @@ _NULL_GAIN = 0.2
 #: Squared task error below which the null-space gain fades proportionally (a constant pull
 #: would leave a second-order task error each step and make convergence linear).
 _NULL_ENERGY = 1e-2
+#: Squared task error below which the (faded) null-space term is skipped altogether.
+_NULL_FLOOR = 1e-8
 #: Largest joint step per iteration (rad or m), keeps the linearisation honest.
 _MAX_STEP = 2.0
 #: Iterations without a 10 % error decrease before a restart.
-_STALL = 3
+_STALL = 2
 #: Iteration cap of one attempt (from the seed or a restart).
-_ATTEMPT_CAP = 30
+_ATTEMPT_CAP = 20
+#: Restarts taken from the table samples nearest the target before random jumps, and the
+#: weight of the rotation distance (‖R − R_t‖²_F) against the position distance (m²).
+_NEAREST = 8
+_ROT_WEIGHT = 0.2
 #: Seed and size of the per-chain table of restart configurations.
 _RNG_SEED = 0x1C0DE
 _TABLE = 4096
@@ -167,6 +174,53 @@ class Chain:
         self.restart_table = self.sample_lo + (self.sample_hi - self.sample_lo) * u
         self.clip_lo = np.where(np.isfinite(self.lower), self.lower, -np.inf)
         self.clip_hi = np.where(np.isfinite(self.upper), self.upper, np.inf)
+        # Index objects of the hot loop: slices (views, no copies) when contiguous.
+        self.cols_sel = _as_slice(self.cols)
+        self.plain_q_sel = _as_slice(self.plain_q) if not self.has_continuous else self.plain_q
+        self.mid_range = robot.mid_range()
+        #: Closed-form geometry of the chain, set on first use by ``analytic_ik``.
+        self.closed_form: tuple | None = None
+        self._robot = robot
+        self._poses: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+
+    def sample_poses(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Frame poses of the restart table: positions (N, 3), ‖p‖² (N,), rotations (N, 9).
+
+        Computed on first use (one FK per sample); a benign race may compute it twice.
+        """
+        if self._poses is None:
+            robot = self._robot
+            model, data = robot.model, robot.model.createData()
+            q = self.mid_range.copy()
+            P = np.empty((_TABLE, 3))
+            Rf = np.empty((_TABLE, 9))
+            for i, row in enumerate(self.restart_table):
+                q[self.active] = row
+                pin.forwardKinematics(model, data, robot.to_pin(q))
+                T = pin.updateFramePlacement(model, data, self.frame_id)
+                P[i] = T.translation
+                Rf[i] = T.rotation.ravel()
+            self._poses = (P, np.einsum("ij,ij->i", P, P), Rf)
+        return self._poses
+
+    def nearest_samples(self, target: pin.SE3, k: int) -> np.ndarray:
+        """Indices of the k table samples nearest ``target``, nearest first.
+
+        Distance ‖p − p_t‖² + c·‖R − R_t‖²_F with ‖R − R_t‖²_F = 6 − 2 tr(R_tᵀ R), so up to
+        constants: ‖p‖² − 2 p·p_t − 2c·vec(R)·vec(R_t).
+        """
+        P, P2, Rf = self.sample_poses()
+        d = P2 - 2.0 * (P @ target.translation)
+        d -= (2.0 * _ROT_WEIGHT) * (Rf @ target.rotation.ravel())
+        idx = np.argpartition(d, k)[:k]
+        return idx[np.argsort(d[idx])]
+
+
+def _as_slice(idx: np.ndarray) -> slice | np.ndarray:
+    """``idx`` as a slice when it is a run of consecutive integers."""
+    if idx.size and np.array_equal(idx, np.arange(idx[0], idx[0] + idx.size)):
+        return slice(int(idx[0]), int(idx[0]) + idx.size)
+    return idx
 
 
 def chain(robot: RobotModel, frame: str) -> Chain:
@@ -218,6 +272,7 @@ def _task(
     return rows, sw, check_pos, check_rot
 
 
+_EYES = [np.eye(i) for i in range(7)]
 _TASKS = {
     mode: (np.array(rows, dtype=int), None, rows[0] < 3, rows[-1] >= 3)
     for mode, rows in MODE_ROWS.items()
@@ -298,7 +353,7 @@ def solve(
         if w.shape != (6,) or not np.all(np.isfinite(w)) or np.any(w < 0.0):
             raise InvalidInputError("give 6 finite, non-negative weights", "weights")
     ch = chain(robot, frame)
-    q_seed = robot.mid_range() if seed is None else np.array(seed, dtype=float)
+    q_seed = ch.mid_range.copy() if seed is None else np.array(seed, dtype=float)
     if q_seed.shape != (robot.n,):
         raise InvalidInputError(f"expected {robot.n} values", "seed")
     rows, sw, check_pos, check_rot = _task(mode, weights)
@@ -309,8 +364,6 @@ def solve(
 
     method = "numeric"
     if analytic:
-        from app.kinematics.analytic_ik import candidates
-
         cands = candidates(robot, ch, target, mode, q_seed)
         if cands is not None:
             method = "analytic"
@@ -355,6 +408,7 @@ class _Search:
         self.restarts = 0
         self.timed_out = False
         self.rng: np.random.Generator | None = None
+        self.nearest: np.ndarray | None = None
         # Best unconverged iterate (weighted task error energy).
         self.best_energy = math.inf
         self.best_q = q_seed.copy()
@@ -425,7 +479,7 @@ class _Search:
         rows, sw = self.rows, self.sw
         full_pose = rows.size == 6 and sw is None
         m = rows.size
-        eye = np.eye(m)
+        eye = _EYES[m]
         redundant = ch.k > m
         q_ref = self.q_seed[ch.active]
         tol_p2, tol_r2 = self.tol_p**2, self.tol_r**2
@@ -433,8 +487,8 @@ class _Search:
         rows_p, rows_r = rows[rows < 3], rows[rows >= 3]
         plain, plain_q = ch.plain, ch.plain_q
         all_plain = plain.size == ch.k
-        if all_plain and np.array_equal(plain_q, np.arange(plain_q[0], plain_q[0] + ch.k)):
-            plain_q = slice(int(plain_q[0]), int(plain_q[0]) + ch.k)
+        if all_plain:
+            plain_q = ch.plain_q_sel
         has_cont = ch.has_continuous
         cont, cont_q, cont_q1 = ch.cont, ch.cont_q, ch.cont_q1
         perf = time.perf_counter
@@ -454,8 +508,7 @@ class _Search:
         clamp = _CLAMP and redundant  # a locked joint leaves a square chain short of a task row
         redundant = redundant and gain > 0.0
         stall_limit, attempt_cap = _STALL, _ATTEMPT_CAP
-        if np.array_equal(cols, np.arange(cols[0], cols[0] + cols.size)):
-            cols = slice(int(cols[0]), int(cols[0]) + cols.size)  # a view, not a copy
+        cols = ch.cols_sel
         cap = max_iterations if max_iterations is not None else 1 << 62
 
         qp = robot.to_pin(self.q_seed)
@@ -469,7 +522,8 @@ class _Search:
         stall = 0
         it = self.iterations
         best_energy, best_qa = self.best_energy, None
-        sub = np.subtract
+        sub, inner, dot = np.subtract, np.inner, np.dot
+        null_floor = _NULL_FLOOR
         try:
             while True:
                 if it >= cap:
@@ -540,14 +594,14 @@ class _Search:
                     if sw is not None:
                         Jt = Jt * sw[:, None]
                 lam2 = damp * energy + mu
-                A = Jt @ Jt.T
+                A = inner(Jt, Jt)  # J Jᵀ
                 A += lam2 * eye
-                if redundant:
+                if redundant and energy > null_floor:
                     # Preference gain fades with the error (quadratic convergence kept).
                     z = (q_ref - qa) * (gain * min(1.0, energy * null_scale))
-                    dq = z - Jt.T @ posv(A, et + Jt @ z)[1]
+                    dq = z - posv(A, et + dot(Jt, z))[1] @ Jt
                 else:
-                    dq = Jt.T @ posv(A, et)[1]
+                    dq = posv(A, et)[1] @ Jt
                     dq *= -1.0
                 n2 = dq @ dq
                 if n2 > max_step2:
@@ -563,9 +617,9 @@ class _Search:
                     locked = ((q_new < lo) & (q_old <= lo)) | ((q_new > hi) & (q_old >= hi))
                     if locked.any() and not locked.all():
                         Jl = Jt * ~locked
-                        A = Jl @ Jl.T
+                        A = inner(Jl, Jl)
                         A += lam2 * eye
-                        dq = Jl.T @ posv(A, et)[1]
+                        dq = posv(A, et)[1] @ Jl
                         n2 = dq @ dq
                         if n2 > max_step2:
                             dq *= max_step / math.sqrt(n2)
@@ -579,11 +633,21 @@ class _Search:
                 self.best_energy, self.best_q = best_energy, self.wire(best_qa)
 
     def _restart(self, rng: np.random.Generator | None) -> np.ndarray:
-        """A uniformly random configuration of the active joints (a TRAC-IK jump)."""
+        """The next restart configuration of the active joints.
+
+        The first ``_NEAREST`` restarts start from the samples of the chain's table whose
+        pose is nearest the target (full pose only); then uniform random jumps (TRAC-IK).
+        """
         self.restarts += 1
         ch = self.ch
+        i = self.restarts - 1
+        if self.full_pose and _NEAREST > 0:
+            if self.nearest is None:
+                self.nearest = ch.nearest_samples(self.target, _NEAREST)
+            if i < len(self.nearest):
+                return ch.restart_table[self.nearest[i]]
         if rng is None:
-            return ch.restart_table[(self.restarts - 1) % _TABLE]
+            return ch.restart_table[i % _TABLE]
         return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * rng.random(ch.k)
 
     # ------------------------------------------------------------------- result
