@@ -7,48 +7,55 @@ oMf(q) = (R, p), equals the target oMt = (R_t, p_t) in the root (world) frame.
 
 Error and its Jacobian
 ----------------------
-The error is the *decoupled* SE(3) error expressed in the **target frame's axes**::
+The error is the *decoupled* SE(3) error in **world axes**::
 
-    e(q) = [ e_p ; e_R ] = [ R_tᵀ (p − p_t) ; log3(R_tᵀ R) ]          (6,)
+    e(q) = [ e_p ; e_R ] = [ p − p_t ; log3(R R_tᵀ) ]                  (6,)
 
 so ‖e_p‖ is the position error (m) and ‖e_R‖ the rotation angle between the frame and the
-target (rad), exactly the two numbers the tolerances bound. With the frame Jacobian in the
-frame's own axes, J_L = [J_v; J_ω] (Pinocchio ``LOCAL``: ṗ = R J_v q̇ and Ṙ = R [J_ω q̇]×),
-and R_e = R_tᵀ R:
+target (rad), exactly the two numbers the tolerances bound. With the frame Jacobian
+J = [J_v; J_ω] in Pinocchio's ``LOCAL_WORLD_ALIGNED`` (ṗ = J_v q̇, Ṙ = [J_ω q̇]× R) and
+R_e = R R_tᵀ:
 
-    d e_p / dq = R_e · J_v                      (since ė_p = R_tᵀ ṗ = R_tᵀ R J_v q̇)
-    d e_R / dq = Jlog3(R_e) · J_ω               (since Ṙ_e = R_e [J_ω q̇]×, a right
-                                                 perturbation, and Pinocchio's Jlog3 is the
-                                                 derivative of log3(R_e · exp(δ)) at δ = 0)
+    d e_p / dq = J_v
+    d e_R / dq = Jlog3(R_e)ᵀ · J_ω
+
+Derivation: Ṙ_e = [ω]× R_e is a *left* perturbation, R_e(t + dt) = exp(ω dt)·R_e =
+R_e·exp(R_eᵀ ω dt); Pinocchio's Jlog3 is the right-Jacobian inverse J_r⁻¹ (the derivative
+of log3(R_e·exp(δ)) at δ = 0), so d log3(R_e) = J_r⁻¹(φ) R_eᵀ ω = J_l⁻¹(φ) ω, and
+J_l⁻¹(φ) = J_r⁻¹(−φ) = J_r⁻¹(φ)ᵀ. (Checked against finite differences in the tests.)
 
 Unlike the coupled ``log6`` error (whose translation part is V(ω)⁻¹·Rᵀp, a screw motion),
 the decoupled error drives the origin along a straight line and the orientation along the
-geodesic independently, which converges in fewer iterations from far seeds (the error KDL and
-TRAC-IK use). Both have the same zero set.
+geodesic independently (the error KDL and TRAC-IK use). Both have the same zero set.
 
 Step (Levenberg–Marquardt damped least squares)
 -----------------------------------------------
 With the task rows selected by ``mode``/``weights`` (row i scaled by √w_i), J_e the error
-Jacobian restricted to the joints supporting the frame, and a null-space preference
-z = α (q_ref − q) for redundant chains (more joints than task rows)::
+Jacobian restricted to the joints supporting the frame, and, for redundant chains (more
+joints than task rows), a null-space preference z = α(E)·(q_ref − q) towards the seed::
 
-    A  = J_e J_eᵀ + λ² I,         λ² = E + μ,     E = ½ ‖e‖²   (Sugihara's LM damping)
+    A  = J_e J_eᵀ + λ² I,        λ² = c·‖e‖² + μ        (error-proportional LM damping)
     Δq = z − J_eᵀ A⁻¹ (e + J_e z)
 
 which is the damped least-squares step Δq = −J_eᵀ A⁻¹ e plus the projection of z on the
-(damped) null space, (I − J_eᵀ A⁻¹ J_e) z, in one linear solve. The damping shrinks with the
-error, so the iteration is Gauss–Newton (quadratic convergence) near a solution and a short,
-bounded gradient-like step far from it or near singularities.
+(damped) null space, (I − J_eᵀ A⁻¹ J_e) z, in one linear solve (LAPACK ``posv``: A is
+symmetric positive definite). The damping shrinks with the error, so the iteration is
+Gauss–Newton (quadratic convergence) near a solution and a bounded step far from it or near
+singularities. The null-space gain α fades with the error (α ∝ ‖e‖² below 0.1): a constant
+pull leaves a second-order task error at every step and makes convergence linear.
 
 Limits and restarts
 -------------------
-Every iterate is clipped to the joint limits; continuous joints are wrapped to (−π, π].
-When the error stalls (a limit blocks progress, a local minimum, a singularity) the solver
-restarts from a uniformly random configuration within the limits (TRAC-IK's random jumps),
-until the time budget or the iteration cap is spent. Only the joints that support the frame
-move; the others keep their seed value.
+Every iterate is clipped to the joint limits; continuous joints are wrapped to (−π, π]. On
+redundant chains, joints already at a limit that the step pushes further are locked for that
+step (their columns removed and the step recomputed), so the other joints take over. When
+the error stalls (no 10 % decrease in two iterations, or 20 iterations in one attempt) the
+solver restarts: first from the samples of a fixed per-chain table (4096 configurations
+uniform within the limits, with their FK poses) nearest the target pose, then from uniform
+random configurations (TRAC-IK's random jumps), until the time budget or the iteration cap
+is spent. Only the joints that support the frame move; the others keep their seed value.
 
-Every solution is verified by an independent forward-kinematics evaluation at the returned
+Every solution is verified by a separate forward-kinematics evaluation at the returned
 wire configuration (error against the target, joint limits, and the optional ``accept``
 predicate, e.g. collision-free) before it is reported as a success.
 """
@@ -306,7 +313,7 @@ def solve(
     mode
         ``pose`` (6-D), ``position`` (orientation free) or ``orientation`` (position free).
     weights
-        Optional non-negative weights of the six error components [e_p; e_R] (target-frame
+        Optional non-negative weights of the six error components [e_p; e_R] (world
         axes). A zero weight frees that component; tolerances are checked only on the
         components with positive weight, position and orientation separately.
     seed

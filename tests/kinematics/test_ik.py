@@ -147,10 +147,27 @@ def test_ur_closed_form_finds_all_branches(registry, robot_id: str, frame: str) 
     assert len(branches) == 8
 
 
+def test_ur_closed_form_on_z1_respects_narrow_limits(registry) -> None:
+    """Z1 has the UR axis pattern but narrow limits: only in-limit branches are returned."""
+    robot = registry.get("z1")
+    frame = robot.ee_frame
+    rng = np.random.default_rng(5)
+    for _ in range(5):
+        q_true = random_q(robot, rng)
+        target = reference_pose(robot, q_true, frame)
+        res = ik.solve(robot, frame, se3(target), num_solutions=2, timeout_ms=100.0)
+        assert res.success and res.method.startswith("analytic")
+        for s in res.solutions:
+            assert within_limits(robot, s.q)
+            dp, dr = pose_error(reference_pose(robot, s.q, frame), target)
+            assert dp <= TOL and dr <= TOL
+
+
 def test_ur_geometry_is_detected_only_where_it_applies(registry) -> None:
     from app.kinematics.analytic_ik import ur_geometry
 
-    for rid, expected in [("ur5", True), ("ur5_dh", True), ("puma560", False), ("panda", False)]:
+    cases = [("ur5", True), ("ur5_dh", True), ("z1", True), ("puma560", False), ("panda", False)]
+    for rid, expected in cases:
         robot = registry.get(rid)
         frame = "panda_link8" if rid == "panda" else robot.ee_frame
         ch = ik.chain(robot, frame)
