@@ -73,21 +73,30 @@ def bench_build() -> None:
     reg = Registry()
     cores = default_processes()
     print(f"machine: {os.cpu_count()} cores ({cores} usable); load {os.getloadavg()}")
+    robot = reg.get("panda")
+    tiny = make_spec(robot, robot.ee_frame, voxel_size=0.08, samples=2 * 32_768)
+    for _ in range(2):
+        t = time.perf_counter()
+        build_map(robot, tiny, processes=cores, min_samples_per_process=1)
+        print(f"process start-up: a 2-chunk build over {cores} processes takes "
+              f"{time.perf_counter() - t:.2f} s")  # fmt: skip
     print(
-        "robot | raw FK /s | map chunk work /s (1 core) | build 1 process /s | ratio | "
-        f"build {cores} processes /s | ratio"
+        f"robot | samples | raw FK /s | map chunk work /s (1 core) | build 1 process /s | "
+        f"ratio | build {cores} processes /s | ratio"
     )
     for rid in ROBOTS:
         robot = reg.get(rid)
-        spec = make_spec(robot, robot.ee_frame, voxel_size=0.08, samples=2_000_000)
         fk = raw_fk_rate(robot)
-        chunk = steady_rate(robot, spec)
-        one = build_rate(robot, spec, 1)
-        many = build_rate(robot, spec, cores)
-        print(
-            f"{rid} | {fk:,.0f} | {chunk:,.0f} | {one:,.0f} | {one / fk:.2f}× | "
-            f"{many:,.0f} | {many / fk:.2f}×   (grid {spec.shape} × {spec.bins} bins)"
-        )
+        for n in (2_000_000, 8_000_000):
+            spec = make_spec(robot, robot.ee_frame, voxel_size=0.08, samples=n)
+            chunk = steady_rate(robot, spec)
+            one = build_rate(robot, spec, 1)
+            many = build_rate(robot, spec, cores)
+            print(
+                f"{rid} | {n:,} | {fk:,.0f} | {chunk:,.0f} | {one:,.0f} | {one / fk:.2f}× | "
+                f"{many:,.0f} | {many / fk:.2f}×   (grid {spec.shape} × {spec.bins} bins; "
+                f"load {os.getloadavg()[0]:.1f})"
+            )
 
 
 def bench_query() -> None:

@@ -74,7 +74,6 @@ import threading
 import time
 import uuid
 from collections.abc import Callable, Sequence
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import asdict, dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
@@ -625,20 +624,26 @@ def voxel_index(
     return (v[0] * shape[1] + v[1]) * shape[2] + v[2], ok
 
 
-# Worker-process state (one builder per process, set by the initializer).
-_WORKER: MapBuilder | None = None
-
-
-def _init_worker(robot_args: dict[str, Any], spec: dict[str, Any]) -> None:
-    global _WORKER
-    robot = RobotModel(**robot_args)
-    _WORKER = MapBuilder(robot, MapSpec(**spec))
-
-
-def _work(start: int, stop: int) -> tuple[int, np.ndarray, np.ndarray]:
-    assert _WORKER is not None
-    cells, vals = _WORKER.cells(start, stop)
-    return stop - start, cells, vals
+def _worker_main(
+    robot_args: dict[str, Any], spec_args: dict[str, Any], tasks: Any, results: Any
+) -> None:
+    """A build process: take chunks from ``tasks`` until ``None``, fold them into a partial
+    map of its own (max per cell), report each chunk's size, then send the partial map
+    (reached cells and their values) and exit."""
+    try:
+        robot = RobotModel(**robot_args)
+        spec = MapSpec(**spec_args)
+        builder = MapBuilder(robot, spec)
+        best = np.full(spec.cells, UNREACHED, dtype=np.float32)
+        while (task := tasks.get()) is not None:
+            a, b = task
+            cells, vals = builder.cells(a, b)
+            np.maximum.at(best, cells, vals)
+            results.put(("n", b - a))
+        idx = np.flatnonzero(best >= 0)
+        results.put(("map", idx, best[idx]))
+    except BaseException as exc:  # reported to the parent, which fails the build
+        results.put(("error", f"{type(exc).__name__}: {exc}"))
 
 
 # ------------------------------------------------------------------------------- build
@@ -688,8 +693,9 @@ def build_map(
 
     Up to ``processes`` worker processes, but no more than one per
     ``min_samples_per_process`` samples (default :data:`MIN_SAMPLES_PER_PROCESS`, less with
-    self-collision checks): starting a process costs about a second. Raises
-    :class:`Cancelled` when ``progress.cancel`` is set (checked after every chunk).
+    self-collision checks): starting a process costs up to about a second. Raises
+    :class:`Cancelled` when ``progress.cancel`` is set (checked after every chunk, or
+    every 0.1 s while worker processes run).
     """
     progress = progress or Progress(spec.samples)
     best = np.full(spec.cells, UNREACHED, dtype=np.float32)
@@ -712,39 +718,78 @@ def build_map(
                 raise Cancelled
             merge(b - a, *builder.cells(a, b))
     else:
-        robot_args = {
-            "robot_id": robot.id,
-            "urdf_text": robot.urdf_text,
-            "package_dirs": robot.package_dirs,
-            "srdf_text": robot.srdf_text,
-            "ee_frame": robot.ee_frame,
-        }
-        ctx = _context()
-        with ProcessPoolExecutor(
-            processes, mp_context=ctx, initializer=_init_worker, initargs=(robot_args, asdict(spec))
-        ) as ex:
-            pending = set()
-            it = iter(chunks)
-            try:
-                for a, b in it:  # keep a few chunks per process in flight
-                    pending.add(ex.submit(_work, a, b))
-                    if len(pending) >= 3 * processes:
-                        break
-                while pending:
-                    done, pending = wait(pending, timeout=0.2, return_when=FIRST_COMPLETED)
-                    if progress.cancel.is_set():
-                        raise Cancelled
-                    for fut in done:
-                        merge(*fut.result())
-                        nxt = next(it, None)
-                        if nxt is not None:
-                            pending.add(ex.submit(_work, *nxt))
-            except BaseException:
-                for fut in pending:
-                    fut.cancel()
-                ex.shutdown(wait=False, cancel_futures=True)
-                raise
+        _build_in_processes(robot, spec, progress, processes, chunks, best)
     return best.reshape(*spec.shape, spec.bins)
+
+
+def _build_in_processes(
+    robot: RobotModel,
+    spec: MapSpec,
+    progress: Progress,
+    processes: int,
+    chunks: list[tuple[int, int]],
+    best: np.ndarray,
+) -> None:
+    """Run the chunks over worker processes (:func:`_worker_main`) and merge their partial
+    maps into ``best`` by maximum. Cancelling terminates the workers at once."""
+    robot_args = {
+        "robot_id": robot.id,
+        "urdf_text": robot.urdf_text,
+        "package_dirs": robot.package_dirs,
+        "srdf_text": robot.srdf_text,
+        "ee_frame": robot.ee_frame,
+    }
+    ctx = _context()
+    tasks = ctx.Queue()
+    results = ctx.Queue()
+    for c in chunks:
+        tasks.put(c)
+    for _ in range(processes):
+        tasks.put(None)
+    workers = [
+        ctx.Process(
+            target=_worker_main,
+            args=(robot_args, asdict(spec), tasks, results),
+            name=f"reachability-{i}",
+            daemon=True,
+        )
+        for i in range(processes)
+    ]
+    for w in workers:
+        w.start()
+    finished = 0
+    try:
+        while finished < processes:
+            if progress.cancel.is_set():
+                raise Cancelled
+            try:
+                msg = results.get(timeout=0.1)
+            except queue.Empty:
+                dead = [w for w in workers if not w.is_alive() and w.exitcode != 0]
+                if dead:
+                    raise RuntimeError(
+                        f"build process {dead[0].name} died (exit code {dead[0].exitcode})"
+                    ) from None
+                continue
+            if msg[0] == "n":
+                progress.done += msg[1]
+            elif msg[0] == "map":
+                _, idx, vals = msg
+                best[idx] = np.maximum(best[idx], vals)
+                finished += 1
+            else:
+                raise RuntimeError(f"build process failed: {msg[1]}")
+        for w in workers:
+            w.join()
+    finally:
+        for w in workers:
+            if w.is_alive():
+                w.terminate()
+        for w in workers:
+            w.join(timeout=5)
+        for q in (tasks, results):
+            q.cancel_join_thread()
+            q.close()
 
 
 def _context() -> multiprocessing.context.BaseContext:

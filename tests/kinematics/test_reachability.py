@@ -320,3 +320,12 @@ def test_self_collision_hook_drops_folded_samples():
     assert not (checked.reshape(-1)[near] >= 0).any()
     far = (r > 1.0) & (r < 1.4)
     assert (checked.reshape(-1)[far] >= 0).all()
+
+
+def test_worker_failure_is_reported(planar):
+    """A worker that cannot build its model fails the build with the worker's error."""
+    broken = RobotModel("planar2_test", planar2_urdf(), ee_frame="tip")
+    broken.urdf_text = "<robot name='x'><link name='a'/></robot>"  # no frame 'tip' there
+    spec = planar_spec(broken, samples=4 * 32_768)
+    with pytest.raises(RuntimeError, match="build process failed"):
+        build_map(broken, spec, processes=2, min_samples_per_process=1)
