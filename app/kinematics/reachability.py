@@ -41,9 +41,11 @@ all, end points included (a range that is a full turn [−π, π] leaves out the
 FK and the Jacobian are vectorised over a block in NumPy (:class:`ChainJacobian`; chains
 with other joint kinds fall back to Pinocchio in a loop). Chunks of :data:`CHUNK` samples
 are the unit of work: with ``processes`` > 1 (and enough samples, see :func:`build_map`)
-worker processes (forkserver; each builds its own model from the URDF) return each chunk's
-cell indices and values, and the parent merges them with ``np.maximum.at``; otherwise the
-chunks run in the calling thread. Progress advances and cancellation is checked per chunk.
+worker processes (forkserver; each builds its own model from the URDF) take chunks from a
+queue, fold them into a partial map of their own (``np.maximum.at``) and, when the queue is
+empty, send it to the parent, which merges the partial maps by maximum; otherwise the chunks
+run in the calling thread. Progress advances per chunk; a cancelled build stops within a
+chunk (in the calling thread) or at once (worker processes are terminated).
 
 Self-collision hook
 -------------------
