@@ -383,18 +383,33 @@ def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray |
     obj = parse_json(raw)
     if (
         isinstance(obj, dict)
-        and obj.keys() <= {"map_id", "positions", "orientations"}
         and isinstance(obj.get("map_id"), str)
         and len(obj["map_id"]) <= 64
         and b"true" not in raw
         and b"false" not in raw
     ):
-        # fast path: numbers only, right widths (else full validation names the element)
-        pos = finite_matrix(obj.get("positions"), 3)
-        quat = finite_matrix(obj["orientations"], 4) if "orientations" in obj else None
-        if pos is not None and (quat is not None or "orientations" not in obj):
-            body = QueryRequest(map_id=obj["map_id"])
-            return _check_query(body.map_id, pos, quat, "positions", limit)
+        # fast paths: numbers only, right widths (else full validation names the element)
+        if obj.keys() <= {"map_id", "positions", "orientations"}:
+            pos = finite_matrix(obj.get("positions"), 3)
+            quat = finite_matrix(obj["orientations"], 4) if "orientations" in obj else None
+            if pos is not None and (quat is not None or "orientations" not in obj):
+                return _check_query(obj["map_id"], pos, quat, "positions", limit)
+        poses = obj.get("poses")
+        if (
+            obj.keys() == {"map_id", "poses"}
+            and isinstance(poses, list)
+            and poses
+            and all(isinstance(p, dict) for p in poses)
+        ):
+            keys = {frozenset(p) for p in poses}
+            if keys in ({frozenset({"position"})}, {frozenset({"position", "orientation"})}):
+                pos = finite_matrix([p["position"] for p in poses], 3)
+                with_q = "orientation" in poses[0]
+                quat = finite_matrix([p["orientation"] for p in poses], 4) if with_q else None
+                if pos is not None and (quat is not None or not with_q):
+                    if quat is not None:
+                        quat = quaternions_checked(quat, "poses.{}.orientation")
+                    return _check_query(obj["map_id"], pos, quat, "poses", limit)
     body = validate_body(QueryRequest, obj)
     if (body.poses is None) == (body.positions is None):
         raise InvalidInputError("give exactly one of poses or positions", "poses")

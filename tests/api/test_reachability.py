@@ -360,3 +360,28 @@ def test_too_many_active_builds(pc, app):
     pc.delete(f"{BASE}/jobs/{first}")
     assert wait_job(pc, first)["status"] == "cancelled"
     assert pc.post(BASE, json=dict(PLANAR_BUILD, samples=1000)).status_code == 202
+
+
+def test_query_forms_agree(pc):
+    j = build(pc)
+    pts, _ = annulus_points()
+    rng = np.random.default_rng(3)
+    yaw = rng.uniform(-math.pi, math.pi, len(pts))
+    quats = np.stack([0 * yaw, 0 * yaw, np.sin(yaw / 2), np.cos(yaw / 2)], 1)
+    compact = pc.post(
+        f"{BASE}/query",
+        json={"map_id": j["map_id"], "positions": pts.tolist(), "orientations": quats.tolist()},
+    ).json()
+    poses = [
+        {"position": p.tolist(), "orientation": q.tolist()} for p, q in zip(pts, quats, strict=True)
+    ]
+    fast = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": poses}).json()
+    poses[0] = {"position": pts[0].tolist(), "orientation": None}  # forces full validation
+    slow = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": poses}).json()
+    assert compact == fast
+    assert slow["reachable"][1:] == fast["reachable"][1:]
+    assert slow["manipulability"][1:] == fast["manipulability"][1:]
+    poses = [{"position": [0, 0, 0], "orientation": [0, 0, 0, 1]}] * 2
+    poses[1] = {"position": [0, 0, 0], "orientation": [0, 0, 0, 0]}
+    r = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": poses})
+    assert r.status_code == 422 and r.json()["field"] == "poses.1.orientation"
