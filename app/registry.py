@@ -58,6 +58,8 @@ log = logging.getLogger("denavit.registry")
 
 #: Default end effector of every DH robot (the TCP frame dh2urdf generates).
 DH_EE_FRAME = "tool"
+#: Ids no robot may take: /robots/dh and /robots/urdf are the import routes.
+RESERVED_IDS = frozenset({"dh", "urdf"})
 #: Most rows a user-supplied DH table may have.
 MAX_DH_JOINTS = 64
 #: Largest DH table document (bytes): tables are small, and YAML parsing is slow.
@@ -284,6 +286,9 @@ def parse_dh_document(text: str, fmt: Literal["json", "yaml"]) -> DHTable:
         raise dh_error(exc) from None
     except RecursionError:
         raise MalformedDocumentError(f"invalid {fmt.upper()}: nested too deeply", "body") from None
+    except (TypeError, KeyError, AttributeError) as exc:  # a value of a type dh2urdf missed
+        log.warning("dh2urdf raised %r instead of DHError", exc)
+        raise InvalidInputError(f"not a valid DH table ({exc})", "body") from None
     if table.dof > MAX_DH_JOINTS:
         raise InvalidInputError(f"at most {MAX_DH_JOINTS} rows, got {table.dof}", "joints")
     return table
@@ -689,6 +694,10 @@ class Registry:
         if self.store is None:
             raise ForbiddenError("this service has no data directory for user robots")
         check_robot_id(robot_id, field)
+        if robot_id in RESERVED_IDS:
+            raise InvalidInputError(
+                f"robot id {robot_id!r} is reserved (/robots/{robot_id} is an import route)", field
+            )
         if self.exists(robot_id):
             kind = "a built-in robot" if self.is_builtin(robot_id) else "a robot"
             raise ConflictError(f"{kind} with id {robot_id!r} already exists", field)

@@ -115,21 +115,23 @@ class DHUnitsDoc(Schema):
 class DHTransformDoc(Schema):
     """A fixed transform: translation ``xyz`` then rotation ``rpy`` (R = Rz·Ry·Rx)."""
 
-    xyz: list[float] = Field([0.0, 0.0, 0.0], min_length=3, max_length=3)
-    rpy: list[float] = Field([0.0, 0.0, 0.0], min_length=3, max_length=3)
+    xyz: list[float] | None = Field([0.0, 0.0, 0.0], min_length=3, max_length=3)
+    rpy: list[float] | None = Field([0.0, 0.0, 0.0], min_length=3, max_length=3)
 
 
 class DHGeometryDoc(Schema):
     """Generated capsule geometry."""
 
-    radius: float = Field(0.02, ge=0, description="Capsule radius in metres (0: none).")
+    radius: float | None = Field(0.02, ge=0, description="Capsule radius in metres (0: none).")
 
 
 class DHRowDoc(Schema):
     """One row: joint i's DH parameters."""
 
     name: str | None = Field(None, description="Joint name (default j<i>, 1-based).")
-    type: Literal["revolute", "prismatic", "continuous"] = Field("revolute")
+    type: Literal["revolute", "prismatic", "continuous"] | None = Field(
+        "revolute", description="Joint kind (null: revolute)."
+    )
     a: float = Field(description="Link length (a_i; a_{i-1} in the modified convention).")
     alpha: float = Field(description="Link twist (α_i; α_{i-1} in the modified convention).")
     d: float = Field(description="Link offset; the constant part for a prismatic joint.")
@@ -152,9 +154,9 @@ class DHTableDoc(Schema):
     name: str = Field(
         pattern=ID_PATTERN.pattern, description="Robot id: 1-64 of a-z, 0-9, '_' and '-'."
     )
-    description: str = Field("", max_length=1000)
+    description: str | None = Field("", max_length=1000)
     convention: Literal["standard", "modified"]
-    units: DHUnitsDoc = Field(default_factory=DHUnitsDoc)
+    units: DHUnitsDoc | None = Field(default_factory=DHUnitsDoc)
     base: DHTransformDoc | None = Field(None, description="World → DH frame 0.")
     tool: DHTransformDoc | None = Field(None, description="DH frame n → tool (TCP).")
     geometry: DHGeometryDoc | None = None
@@ -351,12 +353,28 @@ async def upload_urdf_robot(
     return _created(robot)
 
 
+@router.api_route(
+    "/dh", methods=["GET", "PUT", "PATCH", "DELETE", "OPTIONS"], include_in_schema=False
+)
+@router.api_route(
+    "/urdf", methods=["GET", "PUT", "PATCH", "DELETE", "OPTIONS"], include_in_schema=False
+)
+def import_routes_other_methods(request: Request) -> Response:
+    """405 for /robots/dh and /robots/urdf other than POST ("dh" and "urdf" are no robot ids)."""
+    return problem(
+        405,
+        f"method {request.method} is not allowed here; use POST",
+        instance=request.url.path,
+        headers={"Allow": "POST"},
+    )
+
+
 @router.delete(
     "/{robot_id}",
     operation_id="delete_robot",
     status_code=204,
     dependencies=[Depends(require_token)],
-    responses={k: _WRITE_ERRORS[k] for k in (401, 403)} | {404: ERROR_RESPONSES[404]},
+    responses={k: _WRITE_ERRORS[k] for k in (401, 403, 422)} | {404: ERROR_RESPONSES[404]},
 )
 def delete_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> Response:
     """Remove a user-added robot (every worker stops serving it); built-in robots: 403."""
@@ -388,7 +406,7 @@ def list_robots(reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
     "/{robot_id}",
     operation_id="get_robot",
     response_model=RobotDetail,
-    responses={404: ERROR_RESPONSES[404]},
+    responses={404: ERROR_RESPONSES[404], 422: ERROR_RESPONSES[422]},
 )
 def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
     """Describe a robot: joints in order, frames, default end effector, neutral configuration.
@@ -396,6 +414,19 @@ def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) ->
     Runs in the thread pool: the first request for a robot parses its URDF.
     """
     return ORJSONResponse(robot_detail(reg.get(robot_id)))
+
+
+@router.api_route(
+    "/{robot_id}", methods=["POST", "PUT", "PATCH", "OPTIONS"], include_in_schema=False
+)
+def robot_other_methods(request: Request) -> Response:
+    """405 listing every method of /robots/{robot_id} (GET and DELETE are separate routes)."""
+    return problem(
+        405,
+        f"method {request.method} is not allowed here; use GET or DELETE",
+        instance=request.url.path,
+        headers={"Allow": "GET, HEAD, DELETE"},
+    )
 
 
 @router.get(
@@ -408,6 +439,7 @@ def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) ->
             "description": "URDF",
         },
         404: ERROR_RESPONSES[404],
+        422: ERROR_RESPONSES[422],
     },
 )
 def get_robot_urdf(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> Response:
@@ -423,6 +455,7 @@ def get_robot_urdf(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)
     responses={
         200: {"content": {"application/yaml": {}}},
         404: {**ERROR_RESPONSES[404], "description": "Unknown robot, or not a DH robot."},
+        422: ERROR_RESPONSES[422],
     },
 )
 def get_robot_dh(

@@ -356,6 +356,16 @@ def test_malformed_json_is_400(client: TestClient, settings: Settings, raw: str)
     assert snapshot(settings.data_dir) == before
 
 
+@pytest.mark.parametrize(
+    "units", [{"length": {}}, {"angle": []}, {"length": ["mm"]}, {"length": 1}, {"angle": None}]
+)
+def test_odd_unit_values_are_422(client: TestClient, settings: Settings, units: dict) -> None:
+    resp = client.post("/robots/dh", json={**TABLE, "units": units})
+    assert resp.status_code == 422, resp.text
+    assert resp.json()["field"] in ("units.length", "units.angle", "body")
+    assert snapshot(settings.data_dir / "robots") == []
+
+
 def test_unsupported_media_type(client: TestClient) -> None:
     resp = client.post("/robots/dh", content=b"<x/>", headers={"content-type": "text/xml"})
     problem(resp, 415, "content-type")
@@ -456,3 +466,20 @@ def test_fuzzed_tables_never_500(tmp_path_factory: pytest.TempPathFactory, doc: 
         assert c.get("/robots/fuzz/dh").status_code == 200
         assert c.delete("/robots/fuzz").status_code == 204
     assert not (data / "robots" / "fuzz").exists()
+
+
+@pytest.mark.parametrize("reserved", ["dh", "urdf"])
+def test_import_route_names_are_reserved(client: TestClient, reserved: str) -> None:
+    body = problem(client.post("/robots/dh", json={**TABLE, "name": reserved}), 422, "name")
+    assert "reserved" in body["detail"]
+    assert client.get(f"/robots/{reserved}").status_code == 405
+
+
+def test_allow_headers(client: TestClient) -> None:
+    for path in ("/robots/dh", "/robots/urdf"):
+        for method in ("GET", "PUT", "DELETE", "OPTIONS"):
+            resp = client.request(method, path)
+            assert (resp.status_code, resp.headers["allow"]) == (405, "POST"), (method, path)
+    for method in ("POST", "PUT", "PATCH", "OPTIONS"):
+        resp = client.request(method, "/robots/planar2")
+        assert resp.status_code == 405 and resp.headers["allow"] == "GET, HEAD, DELETE"
