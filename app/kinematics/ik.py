@@ -32,7 +32,9 @@ Step (Levenberg–Marquardt damped least squares)
 -----------------------------------------------
 With the task rows selected by ``mode``/``weights`` (row i scaled by √w_i), J_e the error
 Jacobian restricted to the joints supporting the frame, and, for redundant chains (more
-joints than task rows), a null-space preference z = α(E)·(q_ref − q) towards the seed::
+joints than task rows) during the attempt from the seed, a null-space preference
+z = α(E)·(q_ref − q) towards the seed (restarts start far from the seed, where that pull
+would only fight convergence)::
 
     A  = J_e J_eᵀ + λ² I,        λ² = c·‖e‖² + μ        (error-proportional LM damping)
     Δq = z − J_eᵀ A⁻¹ (e + J_e z)
@@ -110,7 +112,7 @@ _STALL = 2
 _ATTEMPT_CAP = 20
 #: Restarts taken from the table samples nearest the target before random jumps, and the
 #: weight of the rotation distance (‖R − R_t‖²_F) against the position distance (m²).
-_NEAREST = 8
+_NEAREST = 32
 _ROT_WEIGHT = 0.2
 #: Seed and size of the per-chain table of restart configurations.
 _RNG_SEED = 0x1C0DE
@@ -603,7 +605,7 @@ class _Search:
                 lam2 = damp * energy + mu
                 A = inner(Jt, Jt)  # J Jᵀ
                 A += lam2 * eye
-                if redundant and energy > null_floor:
+                if redundant and energy > null_floor and not self.restarts:
                     # Preference gain fades with the error (quadratic convergence kept).
                     z = (q_ref - qa) * (gain * min(1.0, energy * null_scale))
                     dq = z - posv(A, et + dot(Jt, z))[1] @ Jt
