@@ -1105,14 +1105,6 @@ class BuildJobs:
                 job.finished_at = time.time()
         return job
 
-    def wait(self, job_id: str, timeout: float = 60.0) -> BuildJob:
-        """Block until the job has finished (tests and scripts)."""
-        end = time.monotonic() + timeout
-        job = self.jobs[job_id]
-        while job.status in ("queued", "running") and time.monotonic() < end:
-            time.sleep(0.01)
-        return job
-
     def _run(self, robot: RobotModel, job: BuildJob) -> None:
         with self._lock:
             if job.progress.cancel.is_set():
