@@ -93,6 +93,7 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
         ik.solve(robot, frame, goals[0])  # warm-up: chain and closed-form set-up
         wall = np.empty(n)
         cpu = np.empty(n)
+        its = np.empty(n)
         ok = 0
         methods: dict[str, int] = {}
         perf, thread_time = time.perf_counter, time.thread_time
@@ -102,14 +103,31 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
             res = ik.solve(robot, frame, T, timeout_ms=BUDGET_MS)
             wall[i] = perf() - t0
             cpu[i] = thread_time() - c0
+            its[i] = res.iterations
             if res.success and wall[i] <= BUDGET_MS * 1e-3:
                 ok += _verify(robot, frame, res.q, T)
             methods[res.method] = methods.get(res.method, 0) + 1
         mean, p50, p99 = _stats(wall * 1e3)
         method = ", ".join(f"{k} {v}" for k, v in sorted(methods.items()))
-        rows.append((rid, frame, robot.n, n, ok / n, mean, p50, p99, cpu.mean() * 1e3, method))
+        it_txt = f"{its.mean():.1f} / {np.percentile(its, 99):.0f} / {its.max():.0f}"
+        rows.append(
+            (rid, frame, robot.n, n, ok / n, mean, p50, p99, cpu.mean() * 1e3, it_txt, method)
+        )
         print(f"  {rid}: {100 * ok / n:.2f}% mean {mean:.3f} ms", file=sys.stderr, flush=True)
     return rows
+
+
+def calibration() -> float:
+    """Best-of-5 time (µs) of a 6×6 ``np.linalg.solve``: a yardstick of the machine's load."""
+    A = np.eye(6) * 2.0
+    b = np.ones(6)
+    best = math.inf
+    for _ in range(5):
+        t0 = time.perf_counter()
+        for _ in range(20000):
+            np.linalg.solve(A, b)
+        best = min(best, (time.perf_counter() - t0) / 20000 * 1e6)
+    return best
 
 
 def _free_port() -> int:
@@ -181,15 +199,19 @@ def main() -> None:
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else math.nan
     print(
         f"machine: {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; "
-        f"load average {load:.1f} at start"
+        f"load average {load:.1f} at start; calibration {calibration():.2f} µs"
     )
     print(f"\n### In process: {n} targets per robot, 6-D pose, seed mid-range, 5 ms budget\n")
     print("| robot | frame | joints | targets | solve rate | mean (ms) | p50 (ms) | p99 (ms) "
-          "| mean CPU (ms) | method |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    for rid, frame, joints, cnt, rate, mean, p50, p99, cpu, method in in_process(reg, n):
+          "| mean CPU (ms) | iterations mean / p99 / max | method |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for rid, frame, joints, cnt, rate, mean, p50, p99, cpu, its, method in in_process(reg, n):
         print(f"| {rid} | {frame} | {joints} | {cnt} | {100 * rate:.2f}% | {mean:.3f} | "
-              f"{p50:.3f} | {p99:.3f} | {cpu:.3f} | {method} |")  # fmt: skip
+              f"{p50:.3f} | {p99:.3f} | {cpu:.3f} | {its} | {method} |")  # fmt: skip
+    print(
+        f"\ncalibration after the run: 6×6 np.linalg.solve {calibration():.2f} µs "
+        "(best of 5 × 20000; the same machine unloaded: ≈ 4.3 µs)"
+    )
     if n_http > 0:
         print(f"\n### Over HTTP: {n_http} requests per robot, uvicorn 1 worker, loopback\n")
         print("| robot | requests | solve rate | mean round trip (ms) | p50 (ms) | p99 (ms) "
