@@ -53,11 +53,15 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
 
 from app.kinematics.models import RobotModel
+
+if TYPE_CHECKING:
+    from app.kinematics.ik import Chain
 
 _PARALLEL = 1e-9  # |a1 × a2| below this: parallel axes
 _REACH = 1e-12  # slack on |c2| ≤ 1 for targets on the workspace boundary
@@ -329,7 +333,7 @@ def ur_solutions(
 
 
 def candidates(
-    robot: RobotModel, ch: object, target: pin.SE3, mode: str, seed: np.ndarray
+    robot: RobotModel, ch: Chain, target: pin.SE3, mode: str, seed: np.ndarray
 ) -> Iterator[np.ndarray] | None:
     """Closed-form candidates for the active joints of ``ch`` (an ``ik.Chain``).
 
@@ -338,11 +342,11 @@ def candidates(
     nearest to the seed first (it may be empty: the closed form proves the target
     unreachable).
     """
-    active = ch.active  # type: ignore[attr-defined]
-    forms = ch.closed_form  # type: ignore[attr-defined]
+    active = ch.active
+    forms = ch.closed_form
     if forms is None:  # first use: detect once per chain (idempotent, so races are benign)
-        fid = ch.frame_id  # type: ignore[attr-defined]
-        forms = ch.closed_form = (  # type: ignore[attr-defined]
+        fid = ch.frame_id
+        forms = ch.closed_form = (
             ur_geometry(robot, active, fid),
             planar2_geometry(robot, active, fid),
         )

@@ -191,6 +191,7 @@ class Chain:
         self.closed_form: tuple | None = None
         self._robot = robot
         self._poses: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        self.sample_poses()  # built now, so no query pays for it
 
     def sample_poses(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Frame poses of the restart table: positions (N, 3), ‖p‖² (N,), rotations (N, 9).
