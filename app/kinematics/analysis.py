@@ -58,7 +58,12 @@ from typing import Any, Literal
 import numpy as np
 
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.jacobian import Reference, frame_jacobian
+from app.kinematics.jacobian import (
+    REFERENCE_FRAMES,
+    Reference,
+    frame_jacobian,
+    frame_jacobian_by_id,
+)
 from app.kinematics.models import RobotModel
 
 Part = Literal["full", "translation", "rotation"]
@@ -271,8 +276,6 @@ def manipulability_batch(
     ``inverse_condition``, ``condition_number`` (``None`` where singular), ``det_jjt``,
     ``rank`` and ``singular``, with the same definitions as :func:`manipulability_of`.
     """
-    from app.kinematics.jacobian import REFERENCE_FRAMES, frame_jacobian_by_id
-
     ridx = task_rows(part, rows)
     cols = support_columns(robot, frame)
     fid = robot.frame_id(frame)
