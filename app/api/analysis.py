@@ -181,7 +181,7 @@ class StaticsResponse(BaseModel):
         description="Given torques − Jᵀ·F (zeros when the wrench was given)."
     )
     residual_norm: float
-    rank: int = Field(description="Rank of the 6×n Jacobian.")
+    rank: int = Field(description="Rank of the 6×n Jacobian (σ_i > 1e-10·σ_max).")
 
 
 def _manip_json(robot_id: str, frame: str, reference: str, q: np.ndarray, res) -> dict:

@@ -332,7 +332,9 @@ def torques_from_wrench(
     J = frame_jacobian(robot, q, frame, reference)
     F = np.asarray(wrench, dtype=float)
     tau = J.T @ F
-    return Statics(F, tau, np.zeros(robot.n), 0.0, int(np.linalg.matrix_rank(J)), J)
+    s = np.linalg.svd(J, compute_uv=False)
+    rank = int(np.count_nonzero(s > DEFAULT_RELATIVE_TOLERANCE * (s[0] if s.size else 0.0)))
+    return Statics(F, tau, np.zeros(robot.n), 0.0, rank, J)
 
 
 def wrench_from_torques(
