@@ -329,3 +329,15 @@ def test_worker_failure_is_reported(planar):
     spec = planar_spec(broken, samples=4 * 32_768)
     with pytest.raises(RuntimeError, match="build process failed"):
         build_map(broken, spec, processes=2, min_samples_per_process=1)
+
+
+def test_pinocchio_fallback_gives_the_same_map(planar, monkeypatch):
+    """Chains the vectorised path cannot take (mimic, multi-DoF joints) use Pinocchio per
+    sample: forcing that path must give the same map."""
+    spec = planar_spec(planar, samples=8192, orientation_divisions=3)
+    fast = build_map(planar, spec)
+    monkeypatch.setattr(ChainJacobian, "build", classmethod(lambda cls, robot, frame: None))
+    assert isinstance(MapBuilder(planar, spec).chain, PinocchioChain)
+    slow = build_map(planar, spec)
+    assert np.array_equal(fast >= 0, slow >= 0)
+    np.testing.assert_allclose(fast, slow, rtol=1e-6, atol=1e-7)
