@@ -552,14 +552,20 @@ def self_collision_check() -> Callable[[RobotModel, str], Callable[[np.ndarray],
 
 # ------------------------------------------------------------------------------ worker
 def chunk_samples(spec: MapSpec, start: int, stop: int) -> np.ndarray:
-    """Samples [start, stop) of the build (one column per chain joint); random samples
-    come from a generator seeded with (seed, start): start on a BLOCK boundary."""
+    """Samples [start, stop) of the build (one column per chain joint). Random samples come
+    in blocks of :data:`BLOCK`: the block starting at sample b is drawn from a generator
+    seeded with (seed, b), so any range gives the samples the build used."""
     lo = np.asarray(spec.chain_lower)
     hi = np.asarray(spec.chain_upper)
     n = stop - start
     if spec.sampling == "random":
-        rng = np.random.default_rng([spec.seed, start])
-        return lo + (hi - lo) * rng.random((n, lo.size))
+        first = start - start % BLOCK
+        blocks = [
+            np.random.default_rng([spec.seed, b]).random((BLOCK, lo.size))
+            for b in range(first, stop, BLOCK)
+        ]
+        u = np.concatenate(blocks)[start - first : start - first + n]
+        return lo + (hi - lo) * u
     g = spec.grid_per_joint
     cont = np.isclose(hi - lo, 2 * math.pi) & np.isclose(lo, -math.pi)
     idx = np.unravel_index(np.arange(start, stop), (g,) * lo.size)

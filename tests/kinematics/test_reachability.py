@@ -341,3 +341,22 @@ def test_pinocchio_fallback_gives_the_same_map(planar, monkeypatch):
     slow = build_map(planar, spec)
     assert np.array_equal(fast >= 0, slow >= 0)
     np.testing.assert_allclose(fast, slow, rtol=1e-6, atol=1e-7)
+
+
+def test_sampled_poses_are_in_the_map(registry):
+    """Every sampled configuration's pose (Pinocchio FK) is reachable in the map, with a
+    cell value at least its Yoshikawa index (from the analysis module's SVD)."""
+    robot = registry.get("ur5")
+    spec = make_spec(robot, robot.ee_frame, voxel_size=0.1, samples=4096, orientation_divisions=3)
+    best = build_map(robot, spec)
+    m = ReachabilityMap({"spec": spec.__dict__.copy(), **summarize(best)}, best)
+    Q = chunk_samples(spec, 0, 4096)
+    pos, quat, w = [], [], []
+    for q in Q[::97]:
+        T = forward_kinematics(robot, q, [robot.ee_frame])[robot.ee_frame]
+        pos.append(T[:3, 3])
+        quat.append(matrix_to_quaternion(T[:3, :3]))
+        w.append(compute_manipulability(robot, q, robot.ee_frame).yoshikawa)
+    reach, val, ok = m.query(np.array(pos), np.array(quat))
+    assert ok.all() and reach.all()
+    assert np.all(val >= np.array(w) * (1 - 1e-6) - 1e-9)
