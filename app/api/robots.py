@@ -308,7 +308,7 @@ async def import_dh_robot(
             instance=request.url.path,
         )
     try:
-        text = body.decode("utf-8")
+        text = body.decode("utf-8-sig")  # a leading BOM is dropped
     except UnicodeDecodeError as exc:
         raise MalformedBodyError(f"body: not UTF-8 text ({exc.reason})") from None
     return _created(await offload(_import_dh, reg, text, fmt))

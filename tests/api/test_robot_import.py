@@ -483,3 +483,12 @@ def test_allow_headers(client: TestClient) -> None:
     for method in ("POST", "PUT", "PATCH", "OPTIONS"):
         resp = client.request(method, "/robots/planar2")
         assert resp.status_code == 405 and resp.headers["allow"] == "GET, HEAD, DELETE"
+
+
+@pytest.mark.parametrize("media", ["application/json", "application/yaml"])
+def test_byte_order_mark_is_accepted(client: TestClient, media: str) -> None:
+    text = json.dumps(TABLE) if media == "application/json" else yaml.safe_dump(TABLE)
+    resp = client.post(
+        "/robots/dh", content=b"\xef\xbb\xbf" + text.encode(), headers={"content-type": media}
+    )
+    assert resp.status_code == 201, resp.text
