@@ -492,3 +492,25 @@ def test_byte_order_mark_is_accepted(client: TestClient, media: str) -> None:
         "/robots/dh", content=b"\xef\xbb\xbf" + text.encode(), headers={"content-type": media}
     )
     assert resp.status_code == 201, resp.text
+
+
+def test_start_after_a_crash_serves_no_half_robot(tmp_path: Path) -> None:
+    """Leftovers of a crash mid-write are cleaned when the app starts; complete robots stay."""
+    settings = Settings(data_dir=tmp_path / "data")
+    with TestClient(create_app(settings)) as first:
+        assert first.post("/robots/dh", json=TABLE).status_code == 201
+    robots_dir = settings.data_dir / "robots"
+    half = robots_dir / ".tmp-3f9a2c"  # files being written when the process died
+    half.mkdir()
+    (half / "robot.urdf").write_text("<robot name='half'><link")
+    orphan = robots_dir / "orphan"  # a robot directory without its metadata
+    orphan.mkdir()
+    (orphan / "robot.urdf").write_text("<robot/>")
+    (robots_dir / ".tmp-gen123").write_bytes(b"4")  # an interrupted counter update
+    with TestClient(create_app(settings), raise_server_exceptions=False) as again:
+        ids = {r["id"] for r in again.get("/robots").json()["robots"]}
+        assert "tiny" in ids and "orphan" not in ids
+        problem(again.get("/robots/orphan"), 404, "robot_id")
+        assert again.get("/robots/tiny").status_code == 200
+    left = snapshot(robots_dir)
+    assert not [p for p in left if p.startswith((".tmp-", "orphan"))], left
