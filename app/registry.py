@@ -88,6 +88,11 @@ _NUMERIC_ATTRIBUTES = {
     "safety_controller": ("soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"),
 }
 
+#: Attributes holding three numbers (the others hold one).
+_VECTOR_ATTRIBUTES = frozenset(
+    {("origin", "xyz"), ("origin", "rpy"), ("axis", "xyz"), ("box", "size"), ("mesh", "scale")}
+)
+
 
 @lru_cache
 def erd_share_dir() -> Path:
@@ -363,6 +368,13 @@ def _check_numbers(root: Element, field: str) -> None:
                 raise InvalidInputError(
                     f"<{element.tag} {attr}={raw[:40]!r}>: numbers must be finite", field
                 )
+            count = 3 if (element.tag, attr) in _VECTOR_ATTRIBUTES else 1
+            if len(values) != count:
+                raise InvalidInputError(
+                    f"<{element.tag} {attr}={raw[:40]!r}>: expected {count} number"
+                    f"{'s' if count > 1 else ''}, got {len(values)}",
+                    field,
+                )
 
 
 def check_urdf_document(root: Element, field: str = "urdf") -> None:
@@ -371,12 +383,14 @@ def check_urdf_document(root: Element, field: str = "urdf") -> None:
     Pinocchio's own parser only says "not a valid URDF model"; these checks say why: the
     root element, link and joint names, joint types and limits, the tree structure
     (one root, one parent per link, no cycle), finite numbers, non-zero axes, at least one
-    actuated joint, and safe mesh ``filename`` URIs (see :func:`check_resource_uri`).
+    actuated joint, and safe ``<mesh>``/``<texture>`` ``filename`` URIs (see
+    :func:`check_resource_uri`; other ``filename`` attributes, e.g. Gazebo plugins, are
+    never opened).
     """
     if root.tag != "robot":
         raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
     for element in root.iter():
-        uri = element.get("filename")
+        uri = element.get("filename") if element.tag in ("mesh", "texture") else None
         if uri is not None:
             reason = check_resource_uri(uri)
             if reason:
@@ -435,7 +449,7 @@ def check_urdf_document(root: Element, field: str = "urdf") -> None:
             )
         parent_of[ends["child"]] = name
         axis = joint.find("axis")
-        if axis is not None and axis.get("xyz") is not None:
+        if jtype != "fixed" and axis is not None and axis.get("xyz") is not None:
             if all(float(v) == 0.0 for v in axis.get("xyz", "").split()):
                 raise InvalidInputError(f"joint {name!r}: the axis is the zero vector", field)
         if jtype in ("revolute", "prismatic"):

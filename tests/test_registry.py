@@ -237,3 +237,18 @@ def test_dh_document_errors_name_fields() -> None:
     with pytest.raises(InvalidInputError) as err:
         parse_dh_document("a: &x [1]\nb: *x\n", "yaml")
     assert "alias" in err.value.message
+
+
+def test_every_catalog_urdf_is_a_valid_upload(tmp_path: Path, registry: Registry) -> None:
+    """Real-world URDFs (Gazebo plugins, meshes, fixed joints without axes) pass the checks."""
+    reg = Registry(tmp_path)
+    for rid in registry.catalog:
+        builtin = registry.get(rid)
+        robot = reg.add_urdf(
+            f"copy-{rid}", reg.urdf_text(rid), srdf=builtin.srdf_text, ee_frame=builtin.ee_frame
+        )
+        assert robot.joint_names == builtin.joint_names
+        q = builtin.mid_range()
+        np.testing.assert_array_equal(
+            frame_pose(robot, builtin.ee_frame, q), frame_pose(builtin, builtin.ee_frame, q)
+        )

@@ -178,6 +178,21 @@ BAD_UPLOADS = {
         422,
         "urdf",
     ),
+    "two-number axis": ({"urdf": GOOD.replace('axis xyz="0 0 1"', 'axis xyz="0 1"')}, 422, "urdf"),
+    "two-number limit": (
+        {"urdf": GOOD.replace('lower="-2"', 'lower="-2 -1"', 1)},
+        422,
+        "urdf",
+    ),
+    "mimic of nothing": (
+        {
+            "urdf": robot(
+                joint("j1", "base", "l1"), joint("j2", "l1", "l2", extra='<mimic joint="ghost"/>')
+            )
+        },
+        422,
+        "urdf",
+    ),  # fmt: skip
     "zero axis": ({"urdf": GOOD.replace('axis xyz="0 0 1"', 'axis xyz="0 0 0"')}, 422, "urdf"),
     "mesh package parent": ({"urdf": with_mesh("package://../../etc/passwd")}, 422, "urdf"),
     "mesh dotdot": ({"urdf": with_mesh("package://pkg/../../../etc/passwd")}, 422, "urdf"),
