@@ -5,7 +5,9 @@ uniformly within the joint limits of the chain's joints; the target is the FK po
 the seed is the middle of the joint limits; full 6-D pose; success = position error
 ≤ 1e-5 m and orientation error ≤ 1e-5 rad within 5 ms. Reported: solve rate and the
 mean / p50 / p99 wall-clock solve time (successes and failures alike, failures count their
-full budget), plus the mean CPU time of the solving thread (less sensitive to other load).
+full budget), plus the mean CPU time of the solving thread and a second pass whose success
+is counted against 5 ms of thread CPU time (wall budget 100 ms): both are insensitive to
+preemption by other processes on a loaded machine.
 
 Over HTTP, a real uvicorn server (1 worker) is started on loopback and a few hundred
 POST /robots/{id}/ik requests are sent sequentially on one keep-alive connection; the
@@ -107,11 +109,33 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
             if res.success and wall[i] <= BUDGET_MS * 1e-3:
                 ok += _verify(robot, frame, res.q, T)
             methods[res.method] = methods.get(res.method, 0) + 1
+        # Load-robust companion: the same targets with a generous wall budget, success
+        # counted when the solving thread used at most 5 ms of CPU time.
+        ok_cpu = 0
+        for T in goals:
+            c0 = thread_time()
+            res = ik.solve(robot, frame, T, timeout_ms=20 * BUDGET_MS)
+            used = thread_time() - c0
+            if res.success and used <= BUDGET_MS * 1e-3:
+                ok_cpu += _verify(robot, frame, res.q, T)
         mean, p50, p99 = _stats(wall * 1e3)
         method = ", ".join(f"{k} {v}" for k, v in sorted(methods.items()))
         it_txt = f"{its.mean():.1f} / {np.percentile(its, 99):.0f} / {its.max():.0f}"
         rows.append(
-            (rid, frame, robot.n, n, ok / n, mean, p50, p99, cpu.mean() * 1e3, it_txt, method)
+            (
+                rid,
+                frame,
+                robot.n,
+                n,
+                ok / n,
+                mean,
+                p50,
+                p99,
+                cpu.mean() * 1e3,
+                ok_cpu / n,
+                it_txt,
+                method,
+            )  # fmt: skip
         )
         print(f"  {rid}: {100 * ok / n:.2f}% mean {mean:.3f} ms", file=sys.stderr, flush=True)
     return rows
@@ -203,11 +227,14 @@ def main() -> None:
     )
     print(f"\n### In process: {n} targets per robot, 6-D pose, seed mid-range, 5 ms budget\n")
     print("| robot | frame | joints | targets | solve rate | mean (ms) | p50 (ms) | p99 (ms) "
-          "| mean CPU (ms) | iterations mean / p99 / max | method |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
-    for rid, frame, joints, cnt, rate, mean, p50, p99, cpu, its, method in in_process(reg, n):
+          "| mean CPU (ms) | solve rate, ≤ 5 ms CPU | iterations mean / p99 / max "
+          "| method |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for row in in_process(reg, n):
+        rid, frame, joints, cnt, rate, mean, p50, p99, cpu, rate_cpu, its, method = row
         print(f"| {rid} | {frame} | {joints} | {cnt} | {100 * rate:.2f}% | {mean:.3f} | "
-              f"{p50:.3f} | {p99:.3f} | {cpu:.3f} | {its} | {method} |")  # fmt: skip
+              f"{p50:.3f} | {p99:.3f} | {cpu:.3f} | {100 * rate_cpu:.2f}% | {its} "
+              f"| {method} |")  # fmt: skip
     print(
         f"\ncalibration after the run: 6×6 np.linalg.solve {calibration():.2f} µs "
         "(best of 5 × 20000; the same machine unloaded: ≈ 4.3 µs)"
