@@ -218,10 +218,9 @@ def robot_detail(robot: RobotModel) -> dict[str, Any]:
     }
 
 
-def _created(robot: RobotModel) -> ORJSONResponse:
-    return ORJSONResponse(
-        robot_detail(robot), status_code=201, headers={"Location": f"/robots/{robot.id}"}
-    )
+def _created(detail: dict[str, Any]) -> ORJSONResponse:
+    """201 with the new robot's description (built in the pool, like the robot itself)."""
+    return ORJSONResponse(detail, status_code=201, headers={"Location": f"/robots/{detail['id']}"})
 
 
 async def _read_upload(request: Request, cap: int | None = None) -> bytes | Response:
@@ -253,12 +252,23 @@ async def _read_upload(request: Request, cap: int | None = None) -> bytes | Resp
     return b"".join(chunks)
 
 
-def _import_dh(reg: Registry, text: str, fmt: Literal["json", "yaml"]) -> RobotModel:
+def _import_dh(reg: Registry, text: str, fmt: Literal["json", "yaml"]) -> dict[str, Any]:
     try:
         table = parse_dh_document(text, fmt)
     except MalformedDocumentError as exc:
         raise MalformedBodyError(f"body: {exc.message}") from None
-    return reg.import_dh(table)
+    return robot_detail(reg.import_dh(table))
+
+
+def _add_urdf(reg: Registry, upload: UrdfUpload) -> dict[str, Any]:
+    robot = reg.add_urdf(
+        upload.name,
+        upload.urdf,
+        srdf=upload.srdf,
+        ee_frame=upload.ee_frame,
+        description=upload.description,
+    )
+    return robot_detail(robot)
 
 
 # ---------------------------------------------------------------------- writes
@@ -342,15 +352,7 @@ async def upload_urdf_robot(
     if isinstance(body, Response):
         return body
     upload = validate_body(UrdfUpload, parse_json(body))
-    robot = await offload(
-        reg.add_urdf,
-        upload.name,
-        upload.urdf,
-        srdf=upload.srdf,
-        ee_frame=upload.ee_frame,
-        description=upload.description,
-    )
-    return _created(robot)
+    return _created(await offload(_add_urdf, reg, upload))
 
 
 @router.api_route(
