@@ -203,10 +203,16 @@ class RobotStore:
         self._generation_str = str(self.root / GENERATION_FILE)
 
     # ------------------------------------------------------------------ locking
+    def _ensure_root(self) -> None:
+        """Create the root (and make its directory entry durable) on first use."""
+        if not self.root.is_dir():
+            self.root.mkdir(parents=True, exist_ok=True)
+            _fsync_dir(self.root.parent)
+
     @contextlib.contextmanager
     def _locked(self) -> Iterator[None]:
         """Hold the store lock (exclusive ``flock`` on ``<root>/.lock``)."""
-        self.root.mkdir(parents=True, exist_ok=True)
+        self._ensure_root()
         fd = os.open(self.root / LOCK_FILE, os.O_RDWR | os.O_CREAT, 0o644)
         try:
             fcntl.flock(fd, fcntl.LOCK_EX)
@@ -279,7 +285,7 @@ class RobotStore:
 
     def _temp_dir(self) -> tuple[Path, int]:
         """A new, locked temporary directory under the root: (path, fd holding the lock)."""
-        self.root.mkdir(parents=True, exist_ok=True)
+        self._ensure_root()
         for _ in range(_ATTEMPTS):
             tmp = Path(tempfile.mkdtemp(prefix=TMP_PREFIX, dir=self.root))
             fd = os.open(tmp, os.O_RDONLY | os.O_DIRECTORY)
