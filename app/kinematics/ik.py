@@ -53,9 +53,14 @@ redundant chains, joints already at a limit that the step pushes further are loc
 step (their columns removed and the step recomputed), so the other joints take over. When
 the error stalls (no 10 % decrease in two iterations, or 20 iterations in one attempt) the
 solver restarts: first from the samples of a fixed per-chain table (4096 configurations
-uniform within the limits, with their FK poses) nearest the target pose, then from uniform
-random configurations (TRAC-IK's random jumps), until the time budget or the iteration cap
-is spent. Only the joints that support the frame move; the others keep their seed value.
+uniform within the limits, with their FK poses) nearest the target pose
+(‖p − p_t‖² + 0.2·‖R − R_t‖²_F), then from uniform random configurations (TRAC-IK's random
+jumps), until the time budget or the iteration cap is spent. When the seed's pose is more
+than twice as far from the target (in that distance) as the nearest table sample, the
+solver jumps to that sample right after the first iteration: a seed close to the target
+(trajectory following, a good guess) is always used, a far one (the benchmark's mid-range
+seed) costs one evaluation. Only the joints that support the frame move; the others keep
+their seed value.
 
 Every solution is verified by a separate forward-kinematics evaluation at the returned
 wire configuration (error against the target, joint limits, and the optional ``accept``
@@ -114,6 +119,10 @@ _ATTEMPT_CAP = 20
 #: weight of the rotation distance (‖R − R_t‖²_F) against the position distance (m²).
 _NEAREST = 32
 _ROT_WEIGHT = 0.2
+#: Jump from the seed to the nearest table sample at once when that sample's pose is much
+#: closer to the target (distance ratio below _NEAREST_RATIO).
+_NEAREST_FIRST = True
+_NEAREST_RATIO = 0.5
 #: Seed and size of the per-chain table of restart configurations.
 _RNG_SEED = 0x1C0DE
 _TABLE = 4096
@@ -193,37 +202,50 @@ class Chain:
         self._poses: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
         self.sample_poses()  # built now, so no query pays for it
 
-    def sample_poses(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Frame poses of the restart table: positions (N, 3), ‖p‖² (N,), rotations (N, 9).
+    def sample_poses(self) -> tuple[np.ndarray, np.ndarray]:
+        """Poses of the restart table: W = [p | c·vec(R)] (N, 12) and ‖p‖² + 3c (N,).
 
-        Computed on first use (one FK per sample); a benign race may compute it twice.
+        With them the pose distance to a target is one matrix-vector product:
+        ‖p − p_t‖² + c‖R − R_t‖²_F = (‖p‖² + 3c) + (‖p_t‖² + 3c) − 2 W·[p_t; vec(R_t)],
+        using ‖R − R_t‖²_F = 6 − 2 vec(R)·vec(R_t). Computed on first use (one FK per
+        sample); a benign race may compute it twice.
         """
         if self._poses is None:
             robot = self._robot
             model, data = robot.model, robot.model.createData()
             q = self.mid_range.copy()
-            P = np.empty((_TABLE, 3))
-            Rf = np.empty((_TABLE, 9))
+            W = np.empty((_TABLE, 12))
             for i, row in enumerate(self.restart_table):
                 q[self.active] = row
                 pin.forwardKinematics(model, data, robot.to_pin(q))
                 T = pin.updateFramePlacement(model, data, self.frame_id)
-                P[i] = T.translation
-                Rf[i] = T.rotation.ravel()
-            self._poses = (P, np.einsum("ij,ij->i", P, P), Rf)
+                W[i, :3] = T.translation
+                W[i, 3:] = _ROT_WEIGHT * T.rotation.ravel()
+            P = W[:, :3]
+            self._poses = (W, np.einsum("ij,ij->i", P, P) + 3.0 * _ROT_WEIGHT)
         return self._poses
 
-    def nearest_samples(self, target: pin.SE3, k: int) -> np.ndarray:
-        """Indices of the k table samples nearest ``target``, nearest first.
+    def sample_distances(self, target: pin.SE3) -> np.ndarray:
+        """Pose distance ‖p − p_t‖² + c‖R − R_t‖²_F of every table sample to ``target``."""
+        W, W2 = self.sample_poses()
+        pt = target.translation
+        v = np.concatenate((pt, target.rotation.ravel()))
+        d = W @ v
+        d *= -2.0
+        d += W2
+        d += pt @ pt + 3.0 * _ROT_WEIGHT
+        return d
 
-        Distance ‖p − p_t‖² + c·‖R − R_t‖²_F with ‖R − R_t‖²_F = 6 − 2 tr(R_tᵀ R), so up to
-        constants: ‖p‖² − 2 p·p_t − 2c·vec(R)·vec(R_t).
-        """
-        P, P2, Rf = self.sample_poses()
-        d = P2 - 2.0 * (P @ target.translation)
-        d -= (2.0 * _ROT_WEIGHT) * (Rf @ target.rotation.ravel())
-        idx = np.argpartition(d, k)[:k]
-        return idx[np.argsort(d[idx])]
+    def nearest_samples(self, target: pin.SE3, k: int) -> np.ndarray:
+        """Indices of the k table samples nearest ``target``, nearest first."""
+        return _k_smallest(self.sample_distances(target), k)
+
+
+def _k_smallest(d: np.ndarray, k: int) -> np.ndarray:
+    """Indices of the k smallest entries of ``d``, in increasing order."""
+    k = min(k, d.size)
+    idx = np.argpartition(d, k - 1)[:k]
+    return idx[np.argsort(d[idx])]
 
 
 def _as_slice(idx: np.ndarray) -> slice | np.ndarray:
@@ -419,6 +441,7 @@ class _Search:
         self.timed_out = False
         self.rng: np.random.Generator | None = None
         self.nearest: np.ndarray | None = None
+        self.distances: np.ndarray | None = None
         # Best unconverged iterate (weighted task error energy).
         self.best_energy = math.inf
         self.best_q = q_seed.copy()
@@ -533,6 +556,7 @@ class _Search:
         it = self.iterations
         best_energy, best_qa = self.best_energy, None
         sub, inner, dot = np.subtract, np.inner, np.dot
+        nearest_first, nearest_ratio, rot_w = _NEAREST_FIRST, _NEAREST_RATIO, _ROT_WEIGHT
         null_floor = _NULL_FLOOR
         try:
             while True:
@@ -582,6 +606,15 @@ class _Search:
                     qa = self._restart(self.rng)
                     attempt_iters, best_attempt, stall = 0, math.inf, 0
                     continue
+                # ---- first iterate far from the target: jump to the nearest table sample
+                if it == 1 and nearest_first and not conv and full_pose:
+                    d = self.distances = ch.sample_distances(self.target)
+                    j = int(d.argmin())
+                    d_seed = ep2 + (2.0 * rot_w) * (3.0 - (Re[0, 0] + Re[1, 1] + Re[2, 2]))
+                    if d[j] < nearest_ratio * d_seed:
+                        qa = self._restart(self.rng)
+                        attempt_iters, best_attempt, stall = 0, math.inf, 0
+                        continue
                 # ---- stall / restart logic
                 if energy < best_energy:
                     best_energy, best_qa = energy, qa
@@ -653,7 +686,9 @@ class _Search:
         i = self.restarts - 1
         if self.full_pose and _NEAREST > 0:
             if self.nearest is None:
-                self.nearest = ch.nearest_samples(self.target, _NEAREST)
+                if self.distances is None:
+                    self.distances = ch.sample_distances(self.target)
+                self.nearest = _k_smallest(self.distances, _NEAREST)
             if i < len(self.nearest):
                 return ch.restart_table[self.nearest[i]]
         if rng is None:
