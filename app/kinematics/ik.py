@@ -203,12 +203,12 @@ class Chain:
         self.sample_poses()  # built now, so no query pays for it
 
     def sample_poses(self) -> tuple[np.ndarray, np.ndarray]:
-        """Poses of the restart table: W = [p | c·vec(R)] (N, 12) and ‖p‖² + 3c (N,).
+        """Poses of the restart table: M = −2·[p | c·vec(R)] (N, 12) and ‖p‖² + 3c (N,).
 
         With them the pose distance to a target is one matrix-vector product:
-        ‖p − p_t‖² + c‖R − R_t‖²_F = (‖p‖² + 3c) + (‖p_t‖² + 3c) − 2 W·[p_t; vec(R_t)],
-        using ‖R − R_t‖²_F = 6 − 2 vec(R)·vec(R_t). Computed on first use (one FK per
-        sample); a benign race may compute it twice.
+        ‖p − p_t‖² + c‖R − R_t‖²_F = (‖p‖² + 3c) − 2·[p | c·vec(R)]·[p_t; vec(R_t)] + K_t,
+        K_t = ‖p_t‖² + 3c, using ‖R − R_t‖²_F = 6 − 2 vec(R)·vec(R_t). Computed when the chain
+        is built (one FK per sample).
         """
         if self._poses is None:
             robot = self._robot
@@ -222,23 +222,21 @@ class Chain:
                 W[i, :3] = T.translation
                 W[i, 3:] = _ROT_WEIGHT * T.rotation.ravel()
             P = W[:, :3]
-            self._poses = (W, np.einsum("ij,ij->i", P, P) + 3.0 * _ROT_WEIGHT)
+            self._poses = (-2.0 * W, np.einsum("ij,ij->i", P, P) + 3.0 * _ROT_WEIGHT)
         return self._poses
 
-    def sample_distances(self, target: pin.SE3) -> np.ndarray:
-        """Pose distance ‖p − p_t‖² + c‖R − R_t‖²_F of every table sample to ``target``."""
-        W, W2 = self.sample_poses()
+    def sample_distances(self, target: pin.SE3) -> tuple[np.ndarray, float]:
+        """Pose distances of the table samples to ``target``, up to the constant K_t returned
+        with them (‖p − p_t‖² + c‖R − R_t‖²_F = d_i + K_t)."""
+        M, W2 = self.sample_poses()
         pt = target.translation
-        v = np.concatenate((pt, target.rotation.ravel()))
-        d = W @ v
-        d *= -2.0
+        d = M @ np.concatenate((pt, target.rotation.ravel()))
         d += W2
-        d += pt @ pt + 3.0 * _ROT_WEIGHT
-        return d
+        return d, float(pt @ pt) + 3.0 * _ROT_WEIGHT
 
     def nearest_samples(self, target: pin.SE3, k: int) -> np.ndarray:
         """Indices of the k table samples nearest ``target``, nearest first."""
-        return _k_smallest(self.sample_distances(target), k)
+        return _k_smallest(self.sample_distances(target)[0], k)
 
 
 def _k_smallest(d: np.ndarray, k: int) -> np.ndarray:
@@ -608,10 +606,10 @@ class _Search:
                     continue
                 # ---- first iterate far from the target: jump to the nearest table sample
                 if it == 1 and nearest_first and not conv and full_pose:
-                    d = self.distances = ch.sample_distances(self.target)
-                    j = int(d.argmin())
+                    d, k_t = ch.sample_distances(self.target)
+                    self.distances = d
                     d_seed = ep2 + (2.0 * rot_w) * (3.0 - (Re[0, 0] + Re[1, 1] + Re[2, 2]))
-                    if d[j] < nearest_ratio * d_seed:
+                    if d.min() + k_t < nearest_ratio * d_seed:
                         qa = self._restart(self.rng)
                         attempt_iters, best_attempt, stall = 0, math.inf, 0
                         continue
@@ -687,7 +685,7 @@ class _Search:
         if self.full_pose and _NEAREST > 0:
             if self.nearest is None:
                 if self.distances is None:
-                    self.distances = ch.sample_distances(self.target)
+                    self.distances = ch.sample_distances(self.target)[0]
                 self.nearest = _k_smallest(self.distances, _NEAREST)
             if i < len(self.nearest):
                 return ch.restart_table[self.nearest[i]]
