@@ -103,13 +103,13 @@ def _fallback(obj: Any) -> Any:
     raise TypeError(f"cannot serialise {type(obj).__name__}")
 
 
-def registry(request: Request) -> Registry:
-    """The app's robot registry."""
+async def registry(request: Request) -> Registry:
+    """The app's robot registry (``async``: FastAPI runs sync dependencies in a thread)."""
     return request.app.state.registry
 
 
-def app_settings(request: Request) -> Settings:
-    """The app's settings (those given to ``create_app``)."""
+async def app_settings(request: Request) -> Settings:
+    """The app's settings (those given to ``create_app``); ``async``, no thread hop."""
     return request.app.state.settings
 
 
