@@ -58,6 +58,8 @@ ROWS_DOC = (
 )
 TOL_DOC = "Relative rank tolerance: σ_i counts toward the rank when σ_i > relative_tolerance·σ_max."
 Row = Annotated[str | int, Field(description="Row name (vx … wz) or index 0–5.")]
+#: A force, moment or joint torque: finite and at most 10¹² in magnitude (N, N·m).
+Load = Annotated[Finite, Field(ge=-1e12, le=1e12)]
 
 
 class TaskOptions(Schema):
@@ -157,12 +159,12 @@ class StaticsRequest(ConfigurationIn):
         "the frame origin, world axes | local: frame axes | world_spatial: moment about the "
         "world origin.",
     )
-    wrench: Annotated[list[Finite], Field(min_length=6, max_length=6)] | None = Field(
+    wrench: Annotated[list[Load], Field(min_length=6, max_length=6)] | None = Field(
         None,
         description="[fx, fy, fz, mx, my, mz] (N, N·m): the wrench the frame exerts on its "
         "environment.",
     )
-    torques: list[Finite] | None = Field(
+    torques: list[Load] | None = Field(
         None, description="Joint torques/forces in joint order (N·m, N).", max_length=1024
     )
 

@@ -117,6 +117,14 @@ def task_rows(
     return np.array(out, dtype=int)
 
 
+def _require_finite(values: np.ndarray, field: str) -> None:
+    """Raise when a result overflowed (e.g. a prismatic joint at 1e308 m)."""
+    if not np.all(np.isfinite(values)):
+        raise InvalidInputError(
+            "the joint values are too large: the Jacobian or a measure is not finite", field
+        )
+
+
 def _canonical_sign(vectors: np.ndarray) -> np.ndarray:
     """Flip each column so that its largest-magnitude entry is positive (deterministic axes)."""
     if vectors.size == 0:
@@ -183,10 +191,16 @@ def manipulability_of(
     row_names: Sequence[str] | None = None,
     joint_names: Sequence[str] | None = None,
     relative_tolerance: float = DEFAULT_RELATIVE_TOLERANCE,
+    field: str = "q",
 ) -> Manipulability:
-    """Manipulability measures of an m×k task Jacobian (module doc states the math)."""
+    """Manipulability measures of an m×k task Jacobian (module doc states the math).
+
+    A Jacobian or a measure that is not finite (joint values so large that positions
+    overflow) raises :class:`InvalidInputError` naming ``field``.
+    """
     J = np.asarray(J_task, dtype=float)
     m, k = J.shape
+    _require_finite(J, field)
     row_names = list(row_names) if row_names is not None else [str(i) for i in range(m)]
     joint_names = list(joint_names) if joint_names is not None else [str(i) for i in range(k)]
     U, s, Vt = np.linalg.svd(J, full_matrices=True)
@@ -205,13 +219,16 @@ def manipulability_of(
     null = _canonical_sign(V[:, rank:].copy())
     weight = np.sqrt(np.einsum("ij,ij->i", null, null)) if null.size else np.zeros(k)
     dependent = [joint_names[j] for j in np.flatnonzero(weight > DEPENDENCE_THRESHOLD)]
-    det_jjt = float(np.prod(full**2)) if m <= k else 0.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        det_jjt = float(np.prod(full**2)) if m <= k else 0.0
+        yoshikawa = float(np.prod(s[:p]))
+    _require_finite(np.array([det_jjt, yoshikawa]), field)
     return Manipulability(
         rows=row_names,
         joints=joint_names,
         jacobian=J,
         singular_values=s[:p].copy(),
-        yoshikawa=float(np.prod(s[:p])),
+        yoshikawa=yoshikawa,
         det_jjt=det_jjt,
         min_singular_value=smin,
         inverse_condition=smin / smax if smax > 0.0 else 0.0,
@@ -257,6 +274,7 @@ def compute_manipulability(
         row_names=[ROW_NAMES[i] for i in ridx],
         joint_names=[robot.joint_names[c] for c in cols],
         relative_tolerance=relative_tolerance,
+        field="q",
     )
 
 
@@ -287,6 +305,9 @@ def manipulability_batch(
     sel = np.ix_(ridx, cols)
     for i in range(N):
         Js[i] = frame_jacobian_by_id(robot, qp[i], fid, rf)[sel]
+    bad = np.flatnonzero(~np.isfinite(Js).all(axis=(1, 2)))
+    if bad.size:
+        _require_finite(np.array([np.nan]), f"configurations.{int(bad[0])}")
     s = np.linalg.svd(Js, compute_uv=False) if N else np.zeros((0, min(m, k)))
     smax = s[:, 0]
     smin = s[:, -1]
@@ -297,11 +318,16 @@ def manipulability_batch(
     with np.errstate(divide="ignore", invalid="ignore"):
         inv_cond = np.where(smax > 0.0, smin / smax, 0.0)
         cond = np.where(singular | (smin <= 0.0), np.nan, smax / smin)
-    det = np.prod(s**2, axis=1) if m <= k else np.zeros(N)
+    with np.errstate(over="ignore", invalid="ignore"):
+        det = np.prod(s**2, axis=1) if m <= k else np.zeros(N)
+        yoshikawa = np.prod(s, axis=1)
+    bad = np.flatnonzero(~(np.isfinite(det) & np.isfinite(yoshikawa)))
+    if bad.size:
+        _require_finite(np.array([np.nan]), f"configurations.{int(bad[0])}")
     return {
         "rows": [ROW_NAMES[i] for i in ridx],
         "joints": [robot.joint_names[c] for c in cols],
-        "yoshikawa": np.prod(s, axis=1),
+        "yoshikawa": yoshikawa,
         "min_singular_value": smin,
         "max_singular_value": smax,
         "inverse_condition": inv_cond,
@@ -330,8 +356,11 @@ def torques_from_wrench(
     """τ = Jᵀ·F for a wrench F = [fx, fy, fz, mx, my, mz] at ``frame`` (module doc)."""
     robot.frame_id(frame)
     J = frame_jacobian(robot, q, frame, reference)
+    _require_finite(J, "q")
     F = np.asarray(wrench, dtype=float)
-    tau = J.T @ F
+    with np.errstate(over="ignore", invalid="ignore"):
+        tau = J.T @ F
+    _require_finite(tau, "wrench")
     s = np.linalg.svd(J, compute_uv=False)
     rank = int(np.count_nonzero(s > DEFAULT_RELATIVE_TOLERANCE * (s[0] if s.size else 0.0)))
     return Statics(F, tau, np.zeros(robot.n), 0.0, rank, J)
@@ -348,10 +377,15 @@ def wrench_from_torques(
     """Least-squares F with Jᵀ·F ≈ τ (minimum norm among minimisers) and its residual."""
     robot.frame_id(frame)
     J = frame_jacobian(robot, q, frame, reference)
+    _require_finite(J, "q")
     tau = np.asarray(torques, dtype=float)
     U, s, Vt = np.linalg.svd(J.T, full_matrices=False)  # Jᵀ = U S Vt, n×6
     tol = relative_tolerance * (s[0] if s.size else 0.0)
     keep = s > tol
-    F = Vt[keep].T @ ((U[:, keep].T @ tau) / s[keep])
-    res = tau - J.T @ F
-    return Statics(F, J.T @ F, res, float(np.linalg.norm(res)), int(keep.sum()), J)
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        F = Vt[keep].T @ ((U[:, keep].T @ tau) / s[keep])
+        back = J.T @ F
+        res = tau - back
+        norm = float(np.linalg.norm(res))
+    _require_finite(np.concatenate([F, back, res, [norm]]), "torques")
+    return Statics(F, back, res, norm, int(keep.sum()), J)

@@ -196,3 +196,20 @@ def test_registry_planar3r_task_rows(client):
     (v,) = b["joint_null_space"]
     expected = np.array([-0.8, 1.8, -1.0]) / np.linalg.norm([-0.8, 1.8, -1.0])
     assert abs(abs(np.dot(v, expected)) - 1) < 1e-12
+
+
+@pytest.mark.parametrize(
+    ("path", "body", "field"),
+    [
+        ("manipulability", {"q": [0.3, 0.2, 1e308], "part": "translation"}, "q"),
+        ("manipulability/batch", {"configurations": [[0.2, 0.3, 0.1], [0.2, 0.3, 1e308]]},
+         "configurations.1"),
+        ("statics", {"q": [0.2, 0.3, 0.1], "wrench": [1e300, 0, 0, 0, 0, 0]}, "wrench.0"),
+        ("statics", {"q": [0.2, 0.3, 0.1], "torques": [0, -1e13, 0]}, "torques.1"),
+    ],
+)  # fmt: skip
+def test_overflowing_inputs_are_422(client, path, body, field):
+    """A prismatic joint at 1e308 m overflows positions: a 422 naming the field, not nulls."""
+    r = client.post(f"/robots/rrp/{path}", json=body)
+    assert r.status_code == 422, r.text
+    assert r.json()["field"] == field
