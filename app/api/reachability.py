@@ -529,8 +529,10 @@ def slice_image(m: ReachabilityMap, axis: int, value: float, scale: int | None) 
     """
     spec = m.spec
     name = "xyz"[axis]
-    lo = spec.lower[axis]
-    i = int(np.floor((value - lo) / spec.voxel_size))
+    lo, hi = spec.lower[axis], spec.upper[axis]
+    if not lo <= value < hi:
+        raise InvalidInputError(f"{value} is outside the map's {name} range [{lo}, {hi})", name)
+    i = min(int(np.floor((value - lo) / spec.voxel_size)), spec.shape[axis] - 1)
     if not 0 <= i < spec.shape[axis]:
         raise InvalidInputError(
             f"{value} is outside the map's {name} range [{lo}, {spec.upper[axis]})", name

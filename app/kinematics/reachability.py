@@ -491,8 +491,9 @@ def make_spec(
             f"max must exceed min on every axis (axis {'xyz'[i]}: {hi[i]} <= {lo[i]})",
             f"bounds.max.{i}",
         )
-    extent = (hi - lo) / voxel_size
-    if np.any(extent > 1e7):
+    with np.errstate(over="ignore"):
+        extent = (hi - lo) / voxel_size
+    if not np.all(extent <= 1e7):
         raise InvalidInputError("voxels too small for the bounds", "voxel_size")
     shape = [max(1, math.ceil(e - 1e-9)) for e in extent]
     cells = int(np.prod(shape)) * orientation_bins(orientation_divisions)

@@ -239,6 +239,7 @@ def test_write_routes_need_the_token(tmp_path):
         ({"voxel_size": 0.0002}, "voxel_size"),  # too many cells
         ({"bounds": {"min": [0, 0, 0], "max": [1, 1, -1]}}, "bounds.max.2"),
         ({"bounds": {"min": [0, 0], "max": [1, 1, 1]}}, "bounds.min"),
+        ({"bounds": {"min": [-1e308, 0, 0], "max": [1e308, 1, 1]}}, "voxel_size"),
         ({"orientation_divisions": 13}, "orientation_divisions"),
         ({"orientation_divisions": -1}, "orientation_divisions"),
         ({"samples": 0}, "samples"),
@@ -303,7 +304,15 @@ def test_bad_queries_and_unknown_ids(pc, app):
         r = pc.get(path)
         assert r.status_code == 404 and r.json()["field"] == field, path
     assert pc.delete(f"{BASE}/jobs/nope").json()["field"] == "job_id"
-    for params, field in (({}, "z"), ({"x": 0, "z": 0}, "z"), ({"z": 3.0}, "z"), ({"y": 9}, "y")):
+    for params, field in (
+        ({}, "z"),
+        ({"x": 0, "z": 0}, "z"),
+        ({"z": 3.0}, "z"),
+        ({"y": 9}, "y"),
+        ({"x": 1e308}, "x"),
+        ({"z": -1e308}, "z"),
+        ({"y": "inf"}, "y"),
+    ):
         r = pc.get(f"{BASE}/maps/{mid}/slice.png", params=params)
         assert r.status_code == 422 and r.json()["field"] == field, params
     r = pc.get(f"{BASE}/maps/{mid}/slice.png", params={"z": 0, "scale": 0})
