@@ -38,8 +38,6 @@ from typing import Any
 import orjson
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from app.api.errors import problem
-
 #: The id of the request being handled (``None`` outside requests).
 REQUEST_ID: ContextVar[str | None] = ContextVar("denavit_request_id", default=None)
 
@@ -347,6 +345,8 @@ class ObservabilityMiddleware:
             # Answer the 500 here, so it carries the request id; the exception goes on to
             # the server-error handler (which logs it, with the id: REQUEST_ID stays set).
             if not status:
+                from app.api.errors import problem  # here: `python -m app healthcheck` stays light
+
                 await problem(500, "internal error", instance=scope["path"])(
                     scope, receive, send_with_id
                 )
