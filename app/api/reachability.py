@@ -57,6 +57,7 @@ from app.kinematics.reachability import (
     meta_public,
     quaternions_checked,
     robot_fingerprint,
+    self_collision_check,
 )
 from app.registry import Registry
 
@@ -279,6 +280,11 @@ async def build_reachability_map(
         seed=body.seed,
         self_collision=body.self_collision,
     )
+    if spec.self_collision != "ignore":
+        # build (and cache) the collision model now: a robot whose geometry cannot be
+        # loaded is refused here, not reported later as a failed job
+        make = self_collision_check()
+        await offload(make, robot, spec.self_collision)
     _, jobs = _state(request)
     job = jobs.submit(robot, spec)
     return ORJSONResponse(

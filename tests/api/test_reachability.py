@@ -394,3 +394,41 @@ def test_query_forms_agree(pc):
     poses[1] = {"position": [0, 0, 0], "orientation": [0, 0, 0, 0]}
     r = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": poses})
     assert r.status_code == 422 and r.json()["field"] == "poses.1.orientation"
+
+
+def test_self_collision_build_over_http(client, app):
+    """The self-collision hook through the API: folded configurations of a boxed planar arm
+    are dropped (see the core test); a robot without collision geometry builds normally."""
+    from tests.kinematics.test_reachability import COLLIDING_URDF
+
+    app.state.registry._cache["boxes"] = RobotModel("boxes", COLLIDING_URDF, ee_frame="tip")
+    body = {
+        "voxel_size": 0.1,
+        "bounds": {"min": [-1.6, -1.6, -0.05], "max": [1.6, 1.6, 0.05]},
+        "orientation_divisions": 0,
+        "samples": 4000,
+        "sampling": "grid",
+    }
+    maps = {}
+    for mode in ("ignore", "convex"):
+        r = client.post("/robots/boxes/reachability", json=dict(body, self_collision=mode))
+        assert r.status_code == 202, r.text
+        job_id = r.json()["job_id"]
+        end = time.monotonic() + 60
+        while (j := client.get(f"/robots/boxes/reachability/jobs/{job_id}").json())["status"] in (
+            "queued",
+            "running",
+        ) and time.monotonic() < end:
+            time.sleep(0.02)
+        assert j["status"] == "done", j
+        maps[mode] = j["map_id"]
+    near = [[0.35 * math.cos(a), 0.35 * math.sin(a), 0.0] for a in np.linspace(0, 6, 12)]
+    got = {
+        mode: client.post(
+            "/robots/boxes/reachability/query", json={"map_id": mid, "positions": near}
+        ).json()["reachable"]
+        for mode, mid in maps.items()
+    }
+    assert all(got["ignore"]) and not any(got["convex"])
+    listed = client.get("/robots/boxes/reachability/maps").json()["maps"]
+    assert sorted(m["self_collision"] for m in listed) == ["convex", "ignore"]
