@@ -304,6 +304,40 @@ def record_ik(success: bool) -> None:
 _access = logging.getLogger("denavit.access")
 
 
+def access_line(method: str, path: str, status: int, fields: dict[str, Any]) -> None:
+    """Write the access-log line of a request.
+
+    When our JSON handler is the root's (the service's logging set-up) and nothing else
+    listens to ``denavit.access``, the line is built and written directly, under the
+    handler's lock: the same JSON as :class:`JsonFormatter` would write, at a fifth of the
+    cost of a ``logging`` call (no LogRecord, no caller lookup). Otherwise it goes through
+    ``logging`` like any other record.
+    """
+    message = f"{method} {path} {status}"
+    root = logging.getLogger()
+    handler = root.handlers[0] if len(root.handlers) == 1 else None
+    if not isinstance(handler, JsonStderrHandler) or _access.handlers:
+        _access.info(message, extra=fields)
+        return
+    doc: dict[str, Any] = {
+        "ts": datetime.now(UTC).isoformat(timespec="milliseconds"),
+        "level": "info",
+        "logger": _access.name,
+        "message": message,
+    }
+    request_id = REQUEST_ID.get()
+    if request_id is not None:
+        doc["request_id"] = request_id
+    doc.update(fields)
+    line = orjson.dumps(doc, default=str).decode() + "\n"
+    handler.acquire()
+    try:
+        sys.stderr.write(line)
+        sys.stderr.flush()
+    finally:
+        handler.release()
+
+
 class ObservabilityMiddleware:
     """Pure ASGI middleware: request id, latency/status metrics, one access-log line."""
 
@@ -361,12 +395,11 @@ class ObservabilityMiddleware:
             method = scope["method"] if scope["method"] in _METHODS else "other"
             metrics.observe(method, template, status, elapsed)
             if self.access_log and _access.isEnabledFor(logging.INFO):
-                _access.info(
-                    "%s %s %d",
+                access_line(
                     method,
                     scope["path"],
                     status,
-                    extra={
+                    {
                         "method": method,
                         "path": scope["path"],
                         "route": template,
