@@ -406,7 +406,7 @@ def solve(
             method = "analytic+numeric"
         search.rng = rng
         search.run(deadline, max_iterations)
-    return search.result(method, t_start, deadline)
+    return search.result(method, t_start)
 
 
 class _Search:
@@ -694,7 +694,8 @@ class _Search:
         return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * rng.random(ch.k)
 
     # ------------------------------------------------------------------- result
-    def result(self, method: str, t_start: float, deadline: float) -> IKResult:
+    def result(self, method: str, t_start: float) -> IKResult:
+        """The outcome: verified solutions sorted by distance to the seed, or the best iterate."""
         robot = self.robot
         sols = self.solutions
         if len(sols) > 1:
