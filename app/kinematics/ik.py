@@ -24,6 +24,15 @@ R_e·exp(R_eᵀ ω dt); Pinocchio's Jlog3 is the right-Jacobian inverse J_r⁻¹
 of log3(R_e·exp(δ)) at δ = 0), so d log3(R_e) = J_r⁻¹(φ) R_eᵀ ω = J_l⁻¹(φ) ω, and
 J_l⁻¹(φ) = J_r⁻¹(−φ) = J_r⁻¹(φ)ᵀ. (Checked against finite differences in the tests.)
 
+The step below needs J_e only through the linear system J_e·Δq = −e. With
+L = blockdiag(I, Jlog3(R_e)ᵀ), J_e = L·J and L⁻¹e = [e_p; J_r(φ)ᵀ φ] = e, because the
+rotation vector φ is an eigenvector of the right Jacobian J_r(φ) (J_r(φ)·φ = J_r(φ)ᵀ·φ = φ).
+So J_e·Δq = −e ⟺ J·Δq = −e: the Gauss–Newton step, and the minimum-norm one of a redundant
+chain ((L·J)⁺ = J⁺·L⁻¹ for full row rank), are exactly those of the plain frame Jacobian, and
+the solver skips the product with L (it differs only through the damping term). When the
+task keeps only some of the rotation rows (a zero weight), that equivalence no longer holds
+and the rows of J_e are used.
+
 Unlike the coupled ``log6`` error (whose translation part is V(ω)⁻¹·Rᵀp, a screw motion),
 the decoupled error drives the origin along a straight line and the orientation along the
 geodesic independently (the error KDL and TRAC-IK use). Both have the same zero set.
@@ -554,6 +563,10 @@ class _Search:
         it = self.iterations
         best_energy, best_qa = self.best_energy, None
         sub, inner, dot = np.subtract, np.inner, np.dot
+        # With all three rotation rows in the task, J·dq = −e gives the exact Gauss–Newton
+        # step (see the module docstring: Jlog3ᵀ·φ = φ); a strict subset of them needs the
+        # exact rows of J_e = [J_v; Jlog3(R_e)ᵀ J_ω].
+        use_jlog = 0 < rows_r.size < 3
         nearest_first, nearest_ratio, rot_w = _NEAREST_FIRST, _NEAREST_RATIO, _ROT_WEIGHT
         null_floor = _NULL_FLOOR
         try:
@@ -626,8 +639,11 @@ class _Search:
                         attempt_iters, best_attempt, stall = 0, math.inf, 0
                         continue
                 # ---- damped least-squares step on the task rows
-                Lw[:] = jlog3(Re).T
-                Je = L @ gfj(model, data, fid, LWA)[:, cols]
+                if use_jlog:
+                    Lw[:] = jlog3(Re).T
+                    Je = L @ gfj(model, data, fid, LWA)[:, cols]
+                else:
+                    Je = gfj(model, data, fid, LWA)[:, cols]
                 if full_pose:
                     Jt, et = Je, e
                 else:

@@ -394,3 +394,33 @@ def test_bad_arguments(registry, kwargs: dict, field: str) -> None:
 def test_unknown_frame(registry) -> None:
     with pytest.raises(UnknownNameError):
         ik.solve(registry.get("ur5"), "tool9", pin.SE3.Identity())
+
+
+def test_error_jacobian_and_step_equivalence(registry) -> None:
+    """J_e = [J_v; Jlog3(R_e)ᵀ J_ω] matches finite differences of e = [p − p_t; log3(R R_tᵀ)],
+    and J_e·Δq = −e has the same minimum-norm solution as J·Δq = −e (Jlog3ᵀ φ = φ)."""
+    robot = registry.get("panda")
+    fid = robot.frame_id("panda_link8")
+    q0 = robot.mid_range()
+    q0[:7] = [0.3, -0.4, 0.2, -2.0, 0.1, 1.5, 0.4]
+    target = pin.SE3(pin.rpy.rpyToMatrix(0.4, -0.3, 1.1), np.array([0.4, 0.1, 0.5]))
+
+    def err(q: np.ndarray) -> np.ndarray:
+        T = reference_pose(robot, q, "panda_link8")
+        return np.concatenate(
+            [T[:3, 3] - target.translation, pin.log3(T[:3, :3] @ target.rotation.T)]
+        )
+
+    pin.computeJointJacobians(robot.model, robot.data, robot.to_pin(q0))
+    T = pin.updateFramePlacement(robot.model, robot.data, fid)
+    J = pin.getFrameJacobian(robot.model, robot.data, fid, pin.LOCAL_WORLD_ALIGNED)[:, :7]
+    Re = T.rotation @ target.rotation.T
+    Je = np.vstack([J[:3], pin.Jlog3(Re).T @ J[3:]])
+    h = 1e-6
+    fd = np.array(
+        [(err(q0 + h * np.eye(robot.n)[i]) - err(q0 - h * np.eye(robot.n)[i])) / (2 * h)
+         for i in range(7)]
+    ).T  # fmt: skip
+    np.testing.assert_allclose(Je, fd, atol=1e-6)
+    e = err(q0)
+    np.testing.assert_allclose(np.linalg.pinv(Je) @ e, np.linalg.pinv(J) @ e, rtol=1e-9, atol=1e-12)
