@@ -231,7 +231,9 @@ class Chain:
                 W[i, :3] = T.translation
                 W[i, 3:] = _ROT_WEIGHT * T.rotation.ravel()
             P = W[:, :3]
-            self._poses = (-2.0 * W, np.einsum("ij,ij->i", P, P) + 3.0 * _ROT_WEIGHT)
+            # float32: the ranking needs no more, and the product runs twice as fast.
+            M = (-2.0 * W).astype(np.float32)
+            self._poses = (M, (np.einsum("ij,ij->i", P, P) + 3.0 * _ROT_WEIGHT).astype(np.float32))
         return self._poses
 
     def sample_distances(self, target: pin.SE3) -> tuple[np.ndarray, float]:
@@ -239,7 +241,7 @@ class Chain:
         with them (‖p − p_t‖² + c‖R − R_t‖²_F = d_i + K_t)."""
         M, W2 = self.sample_poses()
         pt = target.translation
-        d = M @ np.concatenate((pt, target.rotation.ravel()))
+        d = M @ np.concatenate((pt, target.rotation.ravel())).astype(np.float32)
         d += W2
         return d, float(pt @ pt) + 3.0 * _ROT_WEIGHT
 
@@ -475,10 +477,15 @@ class _Search:
         model, data = robot.model, robot.data
         pin.forwardKinematics(model, data, robot.to_pin(q))
         T = pin.updateFramePlacement(model, data, self.ch.frame_id)
-        ep_full, er_full, e = pose_errors(T, self.target)
+        target = self.target
+        dp = T.translation - target.translation
+        phi = pin.log3(T.rotation @ target.rotation.T)
+        ep2, er2 = float(dp @ dp), float(phi @ phi)
+        ep_full, er_full = math.sqrt(ep2), math.sqrt(er2)
         if self.full_pose:
-            ep, er, energy = ep_full, er_full, ep_full**2 + er_full**2
+            ep, er, energy = ep_full, er_full, ep2 + er2
         else:
+            e = np.concatenate((dp, phi))
             ep, er = self._checked(e)
             energy = self._energy(e)
         if energy < self.best_energy:
@@ -699,9 +706,11 @@ class _Search:
         ch = self.ch
         i = self.restarts - 1
         if self.full_pose and _NEAREST > 0:
+            if self.distances is None:
+                self.distances = ch.sample_distances(self.target)[0]
+            if i == 0:  # the nearest sample alone: no need to rank the others yet
+                return ch.restart_table[int(self.distances.argmin())]
             if self.nearest is None:
-                if self.distances is None:
-                    self.distances = ch.sample_distances(self.target)[0]
                 self.nearest = _k_smallest(self.distances, _NEAREST)
             if i < len(self.nearest):
                 return ch.restart_table[self.nearest[i]]
