@@ -660,18 +660,18 @@ class _Search:
                 lam2 = damp * energy + mu
                 A = inner(Jt, Jt)  # J Jᵀ
                 A += lam2 * eye
+                # nd = −Δq (the sign folded into the update below)
                 if redundant and energy > null_floor and not self.restarts:
                     # Preference gain fades with the error (quadratic convergence kept).
                     z = (q_ref - qa) * (gain * min(1.0, energy * null_scale))
-                    dq = z - posv(A, et + dot(Jt, z))[1] @ Jt
+                    nd = posv(A, et + dot(Jt, z))[1] @ Jt - z
                 else:
-                    dq = posv(A, et)[1] @ Jt
-                    dq *= -1.0
-                n2 = dq @ dq
+                    nd = posv(A, et)[1] @ Jt
+                n2 = nd @ nd
                 if n2 > max_step2:
-                    dq *= max_step / math.sqrt(n2)
+                    nd *= max_step / math.sqrt(n2)
                 q_old = qa
-                q_new = q_old + dq
+                q_new = q_old - nd
                 if has_cont:
                     q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
                 qa = np.minimum(np.maximum(q_new, lo), hi)
@@ -683,11 +683,11 @@ class _Search:
                         Jl = Jt * ~locked
                         A = inner(Jl, Jl)
                         A += lam2 * eye
-                        dq = posv(A, et)[1] @ Jl
-                        n2 = dq @ dq
+                        nd = posv(A, et)[1] @ Jl
+                        n2 = nd @ nd
                         if n2 > max_step2:
-                            dq *= max_step / math.sqrt(n2)
-                        q_new = q_old - dq
+                            nd *= max_step / math.sqrt(n2)
+                        q_new = q_old - nd
                         if has_cont:
                             q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
                         qa = np.minimum(np.maximum(q_new, lo), hi)
