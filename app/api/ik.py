@@ -29,6 +29,7 @@ from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
+from app.observability import record_ik
 from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
@@ -294,6 +295,7 @@ def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict,
         num_solutions=n,
         accept=_accept(robot, opts),
     )
+    record_ik(res.success)
     return {
         "robot_id": robot.id,
         "frame": frame,
@@ -341,6 +343,7 @@ def _solve_batch(
             max_iterations=opts["max_iterations"],
             accept=accept,
         )
+        record_ik(res.success)
         solved += res.success
         if chain and res.success:
             current = res.q

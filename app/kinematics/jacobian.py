@@ -41,4 +41,5 @@ def frame_jacobian_by_id(
 ) -> np.ndarray:
     """6×n Jacobian from a Pinocchio configuration and frame id (hot-path form)."""
     J = pin.computeFrameJacobian(robot.model, robot.data, q_pin, frame_id, rf)
-    return J[:, robot.v_index]
+    # Pinocchio hands back a 1-D array when the model has a single degree of freedom.
+    return np.asarray(J).reshape(6, -1)[:, robot.v_index]
