@@ -485,10 +485,10 @@ def _parse_units(data: Any) -> tuple[str, str]:
     _check_keys(m, ("length", "angle"), "units")
     length = m.get("length", "m")
     angle = m.get("angle", "rad")
-    if length not in LENGTH_UNITS:
+    if not isinstance(length, str) or length not in LENGTH_UNITS:
         expected = ", ".join(repr(u) for u in LENGTH_UNITS)
         raise DHError("units.length", f"unknown length unit {length!r} (expected {expected})")
-    if angle not in ANGLE_UNITS:
+    if not isinstance(angle, str) or angle not in ANGLE_UNITS:
         expected = ", ".join(repr(u) for u in ANGLE_UNITS)
         raise DHError("units.angle", f"unknown angle unit {angle!r} (expected {expected})")
     return length, angle
