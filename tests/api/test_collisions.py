@@ -285,7 +285,7 @@ def test_collision_aware_ik_returns_the_other_elbow(client) -> None:
 
     r = client.post(
         "/robots/planar2/ik",
-        json={**request, "avoid_collisions": True, "obstacles": [rock], "timeout_ms": 50},
+        json={**request, "avoid_collisions": True, "obstacles": [rock], "timeout_ms": 500},
     )
     assert r.status_code == 200, r.text
     body = r.json()
@@ -330,7 +330,7 @@ def test_collision_aware_ik_batch(client) -> None:
             "mode": "position",
             "avoid_collisions": True,
             "obstacles": [rock],
-            "timeout_ms": 50,
+            "timeout_ms": 500,
         },
     ).json()
     assert body["solved"] == 1

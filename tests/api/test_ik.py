@@ -85,7 +85,7 @@ def test_unreachable_is_200_with_success_false(client) -> None:
 def test_seed_as_map_and_frame(client, registry) -> None:
     target = ur5_target(registry)
     seed = {"shoulder_pan_joint": 0.3, "elbow_joint": 1.2}
-    body = {"target": target, "seed": seed, "frame": "tool0", "timeout_ms": 50}
+    body = {"target": target, "seed": seed, "frame": "tool0", "timeout_ms": 500}
     out = client.post("/robots/ur5/ik", json=body).json()
     assert out["success"] and out["frame"] == "tool0"
 

@@ -390,7 +390,7 @@ def test_collision_aware_ik_core(planar2: RobotModel) -> None:
     accept = collision_filter(planar2, parse_obstacles([sphere("rock", elbow, 0.1)]))
     target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
     res = ik.solve(
-        planar2, "tool", target, mode="position", num_solutions=2, accept=accept, timeout_ms=30
+        planar2, "tool", target, mode="position", num_solutions=2, accept=accept, timeout_ms=300
     )
     assert res.success and len(res.solutions) == 1
     np.testing.assert_allclose(res.solutions[0].q, free, atol=1e-6)
