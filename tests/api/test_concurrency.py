@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 from concurrent.futures import ThreadPoolExecutor
 
 import httpx
@@ -20,7 +21,17 @@ def test_concurrent_requests_each_get_their_own_answer(tmp_path, registry) -> No
         for i, q in enumerate(random_configurations(robot, 120, seed=k)):
             jobs.append((rid, ["fk", "jacobian", "batch"][i % 3], q))
 
-    def call(client: httpx.Client, job) -> tuple:
+    # One client (one connection) per thread: httpcore's shared sync pool can close a
+    # connection another thread was just handed (encode/httpcore#1110), which shows up as
+    # a client-side ReadError that says nothing about the server.
+    local = threading.local()
+    clients: list[httpx.Client] = []
+
+    def call(job) -> tuple:
+        client = getattr(local, "client", None)
+        if client is None:
+            client = local.client = httpx.Client(base_url=url, timeout=60)
+            clients.append(client)
         rid, kind, q = job
         if kind == "fk":
             r = client.post(f"/robots/{rid}/fk", json={"q": q.tolist()})
@@ -31,9 +42,12 @@ def test_concurrent_requests_each_get_their_own_answer(tmp_path, registry) -> No
         return job, r.status_code, r.json()
 
     with serve(tmp_path / "data") as url:
-        with httpx.Client(base_url=url, timeout=60) as client:
+        try:
             with ThreadPoolExecutor(max_workers=48) as pool:
-                results = list(pool.map(lambda j: call(client, j), jobs))
+                results = list(pool.map(call, jobs))
+        finally:
+            for client in clients:
+                client.close()
 
     assert len(results) == 360
     for (rid, kind, q), status, body in results:
