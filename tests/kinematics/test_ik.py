@@ -55,10 +55,17 @@ def reference_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.ndarray:
 
 
 def pose_error(T: np.ndarray, target: np.ndarray) -> tuple[float, float]:
-    """Position distance and rotation angle between two 4×4 poses."""
+    """Position distance and rotation angle between two 4×4 poses.
+
+    The angle of R = R_tᵀ·R_T is atan2(sin θ, cos θ) with sin θ = ‖vee(R − Rᵀ)‖/2 and
+    cos θ = (tr R − 1)/2: accurate to ~1e-16 near θ = 0, where acos((tr R − 1)/2) cannot
+    resolve angles below ~2e-8 (acos(1 − ε) = √(2ε)).
+    """
     dp = float(np.linalg.norm(T[:3, 3] - target[:3, 3]))
-    c = (np.trace(target[:3, :3].T @ T[:3, :3]) - 1.0) / 2.0
-    return dp, float(math.acos(min(1.0, max(-1.0, c))))
+    R = target[:3, :3].T @ T[:3, :3]
+    s = 0.5 * math.hypot(R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1])
+    c = (np.trace(R) - 1.0) / 2.0
+    return dp, float(math.atan2(s, c))
 
 
 def within_limits(robot: RobotModel, q: np.ndarray) -> bool:
@@ -76,6 +83,17 @@ def random_q(robot: RobotModel, rng: np.random.Generator) -> np.ndarray:
 
 def se3(T: np.ndarray) -> pin.SE3:
     return pin.SE3(T[:3, :3].copy(), T[:3, 3].copy())
+
+
+@pytest.mark.parametrize("angle", [1e-13, 3e-9, 0.5, 3.0])
+def test_pose_error_resolves_tiny_angles(angle: float) -> None:
+    """The reference error itself: exact angles from 1e-13 rad up to nearly π."""
+    axis = np.array([1.0, -2.0, 0.5]) / math.sqrt(5.25)
+    R0 = pin.exp3(np.array([0.3, -0.7, 1.1]))
+    T, target = np.eye(4), np.eye(4)
+    T[:3, :3] = R0 @ pin.exp3(axis * angle)
+    target[:3, :3] = R0
+    assert pose_error(T, target)[1] == pytest.approx(angle, rel=1e-6, abs=1e-15)
 
 
 @pytest.mark.parametrize(("robot_id", "frame", "analytic"), CHAINS)
