@@ -84,11 +84,13 @@ def _write_all(fd: int, data: bytes) -> None:
         view = view[os.write(fd, view) :]
 
 
-def atomic_write_bytes(path: Path, data: bytes) -> None:
+def atomic_write_bytes(path: Path, data: bytes, durable: bool = True) -> None:
     """Write ``data`` to ``path`` atomically (temp file, fsync, rename, fsync dir).
 
     The temporary file is ``flock``-ed from creation to rename, so
     :func:`remove_stale_temporaries` running in another process never removes it.
+    ``durable=False`` skips both fsyncs: readers still see the old file or the new one,
+    never half of one, but a power loss may lose the write (for ephemeral status files).
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -99,7 +101,8 @@ def atomic_write_bytes(path: Path, data: bytes) -> None:
             if os.fstat(fd).st_nlink == 0:  # a cleanup removed it before we locked it
                 continue
             _write_all(fd, data)
-            os.fsync(fd)
+            if durable:
+                os.fsync(fd)
             os.replace(tmp, path)
             break
         except BaseException:
@@ -109,7 +112,8 @@ def atomic_write_bytes(path: Path, data: bytes) -> None:
             os.close(fd)
     else:  # pragma: no cover - needs a cleanup racing every attempt
         raise OSError(f"could not write {path}: temporaries removed by a concurrent cleanup")
-    _fsync_dir(path.parent)
+    if durable:
+        _fsync_dir(path.parent)
 
 
 def _try_lock(path: Path) -> int | None:

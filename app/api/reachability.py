@@ -1,7 +1,7 @@
 """Reachability maps over HTTP: background builds, stored maps, O(1) queries, PNG slices.
 
 - POST   /robots/{robot_id}/reachability                      start a build (write, 202)
-- GET    /robots/{robot_id}/reachability/jobs                 builds of this process
+- GET    /robots/{robot_id}/reachability/jobs                 builds of this robot
 - GET    /robots/{robot_id}/reachability/jobs/{job_id}        status and progress
 - DELETE /robots/{robot_id}/reachability/jobs/{job_id}        cancel (write)
 - GET    /robots/{robot_id}/reachability/maps                 stored maps
@@ -11,9 +11,11 @@
 - GET    /robots/{robot_id}/reachability/maps/{map_id}/slice.png   heat map of one voxel layer
 
 The grid, orientation bins, sampling and storage are described in
-:mod:`app.kinematics.reachability`. Jobs live in the memory of the process that started
-them (with several uvicorn workers, ask the same worker; a restart forgets jobs, never
-finished maps, which are files under ``DENAVIT_DATA_DIR/maps``).
+:mod:`app.kinematics.reachability`. A build runs in the worker process that accepted it,
+which publishes the job's status under ``DENAVIT_DATA_DIR/maps/.jobs``: with several
+uvicorn workers any worker answers (and cancels) any job. A job whose worker stopped
+reads as failed; finished maps are files under ``DENAVIT_DATA_DIR/maps`` and survive
+restarts.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ import numpy as np
 from fastapi import APIRouter, Depends, Query, Request
 from fastapi import Path as PathParam
 from pydantic import BaseModel, Field
+from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
 from app.api.common import (
@@ -286,7 +289,8 @@ async def build_reachability_map(
         make = self_collision_check()
         await offload(make, robot, spec.self_collision)
     _, jobs = _state(request)
-    job = jobs.submit(robot, spec)
+    # job files are read and written: off the event loop (short work, not the bounded pool)
+    job = await run_in_threadpool(jobs.submit, robot, spec)
     return ORJSONResponse(
         job.to_json(),
         status_code=202,
@@ -300,10 +304,11 @@ async def build_reachability_map(
 async def list_reachability_jobs(
     robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
 ) -> ORJSONResponse:
-    """Build jobs of this robot known to this process."""
+    """Build jobs of this robot (started through any worker), oldest first."""
     await load_robot(reg, robot_id)
     _, jobs = _state(request)
-    return ORJSONResponse({"jobs": [j.to_json() for j in jobs.list(robot_id)]})
+    listed = await run_in_threadpool(jobs.list, robot_id)
+    return ORJSONResponse({"jobs": [j.to_json() for j in listed]})
 
 
 @router.get(
@@ -317,7 +322,8 @@ async def get_reachability_job(
 ) -> ORJSONResponse:
     """Status and progress (percent, samples/s, ETA) of a build."""
     _, jobs = _state(request)
-    return ORJSONResponse(jobs.get(robot_id, job_id).to_json())
+    job = await run_in_threadpool(jobs.get, robot_id, job_id)
+    return ORJSONResponse(job.to_json())
 
 
 @router.delete(
@@ -330,9 +336,14 @@ async def get_reachability_job(
 async def cancel_reachability_job(
     robot_id: RobotId, job_id: JobId, request: Request
 ) -> ORJSONResponse:
-    """Cancel a queued or running build; nothing is stored. Cancelling twice is fine."""
+    """Cancel a queued or running build; nothing is stored. Cancelling twice is fine.
+
+    The build stops within a moment (any worker may be running it); until then the answer
+    and the job still say ``queued`` or ``running``: poll the job until it is ``cancelled``.
+    """
     _, jobs = _state(request)
-    return ORJSONResponse(jobs.cancel(robot_id, job_id).to_json())
+    job = await run_in_threadpool(jobs.cancel, robot_id, job_id)
+    return ORJSONResponse(job.to_json())
 
 
 @router.get("/maps", operation_id="list_reachability_maps", response_model=MapList)

@@ -60,6 +60,11 @@ Files
 A finished map is ``<data_dir>/maps/<robot_id>/<map_id>.npz`` (``best``: the float32 grid;
 ``meta``: JSON), written atomically; maps therefore survive restarts. ``meta`` holds the
 robot's URDF fingerprint so a map of a robot since replaced is refused.
+
+Build jobs run in the process that accepted them; each publishes its status as
+``<data_dir>/maps/.jobs/<job_id>.json`` so that every process sharing the data directory
+(uvicorn workers) answers for every job, and cancels through ``<job_id>.cancel`` markers
+(:class:`BuildJobs`).
 """
 
 from __future__ import annotations
@@ -68,15 +73,17 @@ import hashlib
 import importlib
 import io
 import json
+import logging
 import math
 import multiprocessing
 import os
 import queue
+import socket
 import threading
 import time
 import uuid
 from collections.abc import Callable, Sequence
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -1004,9 +1011,65 @@ class MapStore:
 
 
 # --------------------------------------------------------------------------------- jobs
+#: Statuses of a job that is not finished yet.
+ACTIVE = ("queued", "running")
+STATUSES = (*ACTIVE, "done", "failed", "cancelled")
+#: Job snapshots and cancel markers live here, under the map store's root (a name no robot
+#: directory can take: robot directories never start with a dot).
+JOBS_DIR = ".jobs"
+#: Seconds between two snapshots of an active job (and two looks for cancel markers).
+PUBLISH_INTERVAL = 0.25
+#: A snapshot written in another process namespace (another container on the same volume),
+#: whose owner cannot be checked by pid, counts as orphaned once this old.
+STALE_SECONDS = 30.0
+OWNER_GONE = "the worker process building it stopped"
+_JOB_KEYS = ("job_id", "robot_id", "frame", "status", "map_id", "error", "progress")
+
+log = logging.getLogger("denavit.reachability")
+
+
+def _process_stat(pid: int) -> tuple[str, int] | None:
+    """State letter and start time (clock ticks after boot) of process ``pid`` from
+    ``/proc/<pid>/stat``; ``None`` where that cannot be read."""
+    try:
+        raw = Path(f"/proc/{pid}/stat").read_bytes()
+        fields = raw[raw.rindex(b")") + 2 :].split()
+        return fields[0].decode(), int(fields[19])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _pid_namespace() -> str:
+    """Who can check our pids: the host name and this process's pid namespace."""
+    try:
+        ns = os.readlink("/proc/self/ns/pid")
+    except OSError:
+        ns = ""
+    return f"{socket.gethostname()} {ns}"
+
+
+_PID_SPACE = _pid_namespace()
+
+
+def _process_alive(pid: int, started: int | None) -> bool:
+    """Whether process ``pid`` still runs (and is the one that started at ``started``, when
+    known: a pid reused after a restart is another process)."""
+    try:
+        os.kill(pid, 0)  # signal 0: only checks that the process exists
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass  # it exists, as another user
+    stat = _process_stat(pid)
+    if stat is None:
+        return True  # no /proc: the signal check is all there is
+    state, start = stat
+    return state not in ("Z", "X") and (started is None or start == started)
+
+
 @dataclass
 class BuildJob:
-    """A map build running (or queued) in the background."""
+    """A map build running (or queued) in the background, owned by this process."""
 
     job_id: str
     robot_id: str
@@ -1040,12 +1103,106 @@ class BuildJob:
         }
 
 
+@dataclass(frozen=True)
+class JobSnapshot:
+    """A job of another process, as its owner last published it: ``record`` is the owner's
+    :meth:`BuildJob.to_json` (``to_json`` and ``status`` read as on a :class:`BuildJob`)."""
+
+    record: dict[str, Any]
+    created_at: float
+    finished_at: float | None
+    updated_at: float
+    owner_pid: int
+    owner_token: str
+    owner_space: str
+    owner_started: int | None
+
+    @property
+    def job_id(self) -> str:
+        return self.record["job_id"]
+
+    @property
+    def robot_id(self) -> str:
+        return self.record["robot_id"]
+
+    @property
+    def status(self) -> str:
+        return self.record["status"]
+
+    def to_json(self) -> dict[str, Any]:
+        return {**self.record, "progress": dict(self.record["progress"])}
+
+    @classmethod
+    def parse(cls, data: bytes, job_id: str) -> JobSnapshot | None:
+        """The snapshot in a job file's bytes; ``None`` if they do not hold one of job_id."""
+        try:
+            raw = json.loads(data)
+            record = {k: raw[k] for k in _JOB_KEYS}
+            started = raw["owner_started"]
+            snap = cls(
+                record,
+                float(raw["created_at"]),
+                None if raw["finished_at"] is None else float(raw["finished_at"]),
+                float(raw["updated_at"]),
+                raw["owner_pid"],
+                str(raw["owner_token"]),
+                str(raw["owner_space"]),
+                started if isinstance(started, int) else None,
+            )
+        except (ValueError, TypeError, KeyError):
+            return None
+        valid = (
+            record["job_id"] == job_id
+            and isinstance(record["robot_id"], str)
+            and record["status"] in STATUSES
+            and isinstance(record["progress"], dict)
+            and type(snap.owner_pid) is int
+            and snap.owner_pid > 0
+        )
+        return snap if valid else None
+
+    def owner_gone(self) -> bool:
+        """Whether the process that owns this job has stopped."""
+        if self.owner_space != _PID_SPACE:  # its pids are not ours to check
+            return time.time() - self.updated_at > STALE_SECONDS
+        return not _process_alive(self.owner_pid, self.owner_started)
+
+    def resolved(self) -> JobSnapshot:
+        """This snapshot, or, if it says queued/running but its owner has stopped, the job
+        reported failed (nobody will ever finish it)."""
+        if self.status not in ACTIVE or not self.owner_gone():
+            return self
+        progress = {**self.record["progress"], "eta_seconds": None}
+        record = {**self.record, "status": "failed", "error": OWNER_GONE, "progress": progress}
+        return replace(self, record=record, finished_at=self.updated_at)
+
+
 class BuildJobs:
     """Runs builds one after another in a background thread; each build uses ``processes``.
 
-    Jobs live in memory (a restart forgets them; finished maps are on disk). At most
-    ``max_active`` builds may be queued or running (more is a conflict) and ``max_jobs``
-    are remembered, finished ones forgotten first.
+    Jobs run in the process that accepted them and are answered for by every process
+    sharing the map store (uvicorn workers on one data directory):
+
+    - The owner publishes each job as ``<root>/.jobs/<job_id>.json`` (root = the map
+      store's root): :meth:`BuildJob.to_json` plus ``created_at``, ``finished_at``,
+      ``updated_at`` (wall clock) and the owner's pid, process start time, pid namespace
+      and instance token. It writes it on submit, on every status change and, from one
+      publisher thread per instance, every :data:`PUBLISH_INTERVAL` s while the job is
+      queued or running. Writes are atomic (temporary ``.tmp-*`` file, rename; no fsync:
+      the status is ephemeral). A job's final snapshot is written before the job reads as
+      finished in memory, so no process sees it finished while another still sees it run.
+    - :meth:`get` and :meth:`list` answer with the in-memory job when this process owns it,
+      else with the published :class:`JobSnapshot`; a snapshot that says queued/running
+      whose owner has stopped (pid gone, or reused by another process) reads as failed.
+    - :meth:`cancel` of another process's job creates ``<job_id>.cancel``; the owner's
+      publisher looks for markers of its active jobs on every tick and cancels them as a
+      local cancel does, and removes the marker when the job finishes.
+
+    A restart forgets nothing a client needs: finished maps are files, and the jobs of a
+    stopped process read as failed. At most ``max_active`` builds may be queued or running
+    in one process (more is a conflict); ``max_jobs`` finished jobs are remembered in
+    memory, and the job files keep the ``max_jobs`` newest finished jobs of all processes
+    (older ones are deleted on submit; active ones never are).
     """
 
     def __init__(
@@ -1054,37 +1211,133 @@ class BuildJobs:
         processes: int | None = None,
         max_jobs: int = 64,
         max_active: int = 8,
+        publish_interval: float = PUBLISH_INTERVAL,
     ):
         self.store = store
         self.processes = processes or default_processes()
         self.max_jobs = max_jobs
         self.max_active = max_active
+        self.publish_interval = publish_interval
         self.jobs: dict[str, BuildJob] = {}
-        self._lock = threading.Lock()
+        self.dir = store.root / JOBS_DIR
+        #: Tells this instance's snapshots apart from other instances in the same process.
+        self.token = uuid.uuid4().hex
+        self._pid = os.getpid()
+        stat = _process_stat(self._pid)
+        self._started = stat[1] if stat else None
+        self._lock = threading.Lock()  # jobs, their statuses and their files
         self._queue: queue.Queue[tuple[RobotModel, BuildJob]] = queue.Queue()
         self._thread: threading.Thread | None = None
+        self._publisher: threading.Thread | None = None
+        self._publish_failing = False
 
+    # ------------------------------------------------------------------ files
+    def _path(self, job_id: str) -> Path:
+        return self.dir / f"{job_id}.json"
+
+    def _marker(self, job_id: str) -> Path:
+        return self.dir / f"{job_id}.cancel"
+
+    def _publish(self, job: BuildJob) -> None:
+        """Write the job's snapshot (with the lock held). A failed write is logged, not
+        raised: the job still runs and this process still answers for it."""
+        record = {
+            **job.to_json(),
+            "created_at": job.created_at,
+            "finished_at": job.finished_at,
+            "updated_at": time.time(),
+            "owner_pid": self._pid,
+            "owner_token": self.token,
+            "owner_space": _PID_SPACE,
+            "owner_started": self._started,
+        }
+        try:
+            atomic_write_bytes(self._path(job.job_id), json.dumps(record).encode(), durable=False)
+        except OSError as exc:
+            if not self._publish_failing:
+                log.warning("cannot publish build job %s: %s", job.job_id, exc)
+            self._publish_failing = True
+        else:
+            self._publish_failing = False
+
+    def _read(self, job_id: str) -> JobSnapshot | None:
+        """The published snapshot of ``job_id`` (a valid id), resolved; ``None`` if none."""
+        try:
+            data = self._path(job_id).read_bytes()
+        except OSError:
+            return None
+        snap = JobSnapshot.parse(data, job_id)
+        return None if snap is None else snap.resolved()
+
+    def _snapshots(self, skip: frozenset[str] | set[str] = frozenset()) -> list[JobSnapshot]:
+        """Every published snapshot but those of ``skip`` (job ids)."""
+        try:
+            names = os.listdir(self.dir)
+        except OSError:
+            return []
+        out = []
+        for name in names:
+            stem, _, ext = name.partition(".")
+            if ext == "json" and _valid_id(stem) and stem not in skip:
+                snap = self._read(stem)
+                if snap is not None:
+                    out.append(snap)
+        return out
+
+    def _housekeep(self) -> None:
+        """Delete the oldest finished job files beyond ``max_jobs``, and cancel markers of
+        finished jobs (or of jobs without a file for :data:`STALE_SECONDS`)."""
+        snaps = self._snapshots()
+        finished = sorted((s for s in snaps if s.status not in ACTIVE), key=lambda s: s.created_at)
+        for s in finished[: max(0, len(finished) - self.max_jobs)]:
+            self._path(s.job_id).unlink(missing_ok=True)
+        status = {s.job_id: s.status for s in snaps}
+        try:
+            markers = [n for n in os.listdir(self.dir) if n.endswith(".cancel")]
+        except OSError:
+            return
+        for name in markers:
+            path = self.dir / name
+            job_status = status.get(name.removesuffix(".cancel"))
+            try:
+                orphan = job_status is None and time.time() - path.stat().st_mtime > STALE_SECONDS
+                if orphan or (job_status is not None and job_status not in ACTIVE):
+                    path.unlink(missing_ok=True)
+            except OSError:
+                continue
+
+    # ------------------------------------------------------------------ jobs
     def submit(self, robot: RobotModel, spec: MapSpec) -> BuildJob:
         with self._lock:
-            active = [j for j in self.jobs.values() if j.status in ("queued", "running")]
+            active = {j.job_id for j in self.jobs.values() if j.status in ACTIVE}
             if len(active) >= self.max_active:
                 raise ConflictError(
                     f"{len(active)} builds are already queued or running; cancel one or wait",
                     "robot_id",
                 )
-            for old in [j for j in self.jobs.values() if j not in active]:
+            for old in [i for i in self.jobs if i not in active]:
                 if len(self.jobs) < self.max_jobs:
                     break
-                del self.jobs[old.job_id]
+                del self.jobs[old]
             job = BuildJob(uuid.uuid4().hex, robot.id, spec, Progress(spec.samples))
             self.jobs[job.job_id] = job
+            self._publish(job)
+            # daemon threads: a build in progress never holds up the process's exit
             if self._thread is None:
-                # a daemon thread: a build in progress never holds up the process's exit
                 self._thread = threading.Thread(
                     target=self._loop, name="reachability-builds", daemon=True
                 )
                 self._thread.start()
+            if self._publisher is None:
+                self._publisher = threading.Thread(
+                    target=self._publish_loop, name="reachability-jobs", daemon=True
+                )
+                self._publisher.start()
         self._queue.put((robot, job))
+        try:
+            self._housekeep()
+        except OSError as exc:  # pragma: no cover - a file system gone bad
+            log.warning("cannot clean up build job files: %s", exc)
         return job
 
     def _loop(self) -> None:
@@ -1092,32 +1345,92 @@ class BuildJobs:
             robot, job = self._queue.get()
             self._run(robot, job)
 
-    def get(self, robot_id: str, job_id: str) -> BuildJob:
+    def _publish_loop(self) -> None:
+        """Refresh the snapshots of active jobs and act on cancel markers; ends when no job
+        is active (:meth:`submit` starts it again)."""
+        while True:
+            time.sleep(self.publish_interval)
+            with self._lock:
+                active = [j for j in self.jobs.values() if j.status in ACTIVE]
+                if not active:
+                    self._publisher = None
+                    return
+            try:
+                wanted = {j.job_id for j in active if self._marker(j.job_id).exists()}
+                with self._lock:
+                    for job in active:
+                        if job.job_id in wanted and job.status in ACTIVE:
+                            self._cancel(job)
+                        if job.status in ACTIVE:
+                            self._publish(job)
+            except Exception:  # never let the thread die while jobs depend on it
+                log.exception("publishing build jobs failed")
+
+    def get(self, robot_id: str, job_id: str) -> BuildJob | JobSnapshot:
+        """The job: this process's own, else another process's published snapshot."""
         job = self.jobs.get(job_id)
-        if job is None or job.robot_id != robot_id:
-            known = [j.job_id for j in self.jobs.values() if j.robot_id == robot_id]
-            raise UnknownNameError("job", job_id, "job_id", known)
-        return job
+        if job is not None and job.robot_id == robot_id:
+            return job
+        snap = self._read(job_id) if job is None and _valid_id(job_id) else None
+        if snap is not None and snap.robot_id == robot_id:
+            return snap
+        known = [j.job_id for j in self.list(robot_id)]
+        raise UnknownNameError("job", job_id, "job_id", known)
 
-    def list(self, robot_id: str) -> list[BuildJob]:
-        return [j for j in self.jobs.values() if j.robot_id == robot_id]
+    def list(self, robot_id: str) -> list[BuildJob | JobSnapshot]:
+        """The robot's jobs, this process's and the others', oldest first."""
+        with self._lock:
+            own = [j for j in self.jobs.values() if j.robot_id == robot_id]
+            ids = set(self.jobs)
+        others = [s for s in self._snapshots(skip=ids) if s.robot_id == robot_id]
+        return sorted([*own, *others], key=lambda j: j.created_at)
 
-    def cancel(self, robot_id: str, job_id: str) -> BuildJob:
-        """Cancel a queued or running build (idempotent); a finished one is a conflict."""
+    def cancel(self, robot_id: str, job_id: str) -> BuildJob | JobSnapshot:
+        """Cancel a queued or running build (idempotent); a finished one is a conflict.
+
+        Another process's job gets a cancel marker, which its owner acts on within
+        :data:`PUBLISH_INTERVAL` s; the snapshot returned is the job before that.
+        """
         job = self.get(robot_id, job_id)
+        if isinstance(job, JobSnapshot):
+            if job.status in ("done", "failed"):
+                raise ConflictError(f"the job has already {job.status}", "job_id")
+            if job.status in ACTIVE:
+                self._marker(job_id).touch()
+            return job
         with self._lock:
             if job.status in ("done", "failed"):
                 raise ConflictError(f"the job has already {job.status}", "job_id")
-            job.progress.cancel.set()
-            if job.status == "queued":
-                job.status = "cancelled"
-                job.finished_at = time.time()
+            self._cancel(job)
         return job
+
+    def _cancel(self, job: BuildJob) -> None:
+        """Cancel an own job (with the lock held): a queued one at once, a running one when
+        :func:`build_map` next looks at ``progress.cancel``."""
+        job.progress.cancel.set()
+        if job.status == "queued":
+            self._finish(job, "cancelled")
+
+    def _finish(
+        self, job: BuildJob, status: str, map_id: str | None = None, error: str | None = None
+    ) -> None:
+        """Publish the job's final state, then make it final in memory (lock held)."""
+        if job.progress.finished is None:
+            job.progress.finished = time.monotonic()
+        final = replace(job, status=status, map_id=map_id, error=error, finished_at=time.time())
+        self._publish(final)
+        job.map_id, job.error, job.finished_at = map_id, error, final.finished_at
+        job.status = status
+        try:
+            self._marker(job.job_id).unlink(missing_ok=True)
+        except OSError:
+            pass
 
     def _run(self, robot: RobotModel, job: BuildJob) -> None:
         with self._lock:
-            if job.progress.cancel.is_set():
+            if job.status != "queued":  # cancelled while queued
                 return
+            self._publish(replace(job, status="running"))
             job.status = "running"
         try:
             best = build_map(robot, job.spec, job.progress, self.processes)
@@ -1134,15 +1447,11 @@ class BuildJobs:
                 **summarize(best),
             }
             self.store.save(ReachabilityMap(meta, best))
-            with self._lock:
-                job.map_id = meta["map_id"]
-                job.status = "done"
         except Cancelled:
-            job.status = "cancelled"
+            outcome: tuple[str, str | None, str | None] = ("cancelled", None, None)
         except Exception as exc:  # reported on the job, not raised into the void
-            job.status = "failed"
-            job.error = f"{type(exc).__name__}: {exc}"
-        finally:
-            if job.progress.finished is None:
-                job.progress.finished = time.monotonic()
-            job.finished_at = time.time()
+            outcome = ("failed", None, f"{type(exc).__name__}: {exc}")
+        else:
+            outcome = ("done", meta["map_id"], None)
+        with self._lock:
+            self._finish(job, *outcome)

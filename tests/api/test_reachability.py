@@ -8,6 +8,7 @@ import struct
 import time
 import zlib
 
+import httpx
 import numpy as np
 import pytest
 from fastapi.testclient import TestClient
@@ -16,6 +17,7 @@ from app.kinematics.models import RobotModel
 from app.main import create_app
 from app.settings import Settings
 from tests.kinematics.test_analysis import L1, L2, planar2_urdf
+from tests.live import serve
 
 ROBOT = "planar2_test"
 BASE = f"/robots/{ROBOT}/reachability"
@@ -432,3 +434,63 @@ def test_self_collision_build_over_http(client, app):
     assert all(got["ignore"]) and not any(got["convex"])
     listed = client.get("/robots/boxes/reachability/maps").json()["maps"]
     assert sorted(m["self_collision"] for m in listed) == ["convex", "ignore"]
+
+
+def finished(job: dict) -> bool:
+    return job["status"] not in ("queued", "running")
+
+
+def poll_live(url: str, until, timeout: float = 60.0) -> dict:
+    """GET ``url`` until ``until(job)`` holds (60 s: a loaded machine is slow, never wrong)."""
+    end = time.monotonic() + timeout
+    while True:
+        r = httpx.get(url, timeout=10)
+        assert r.status_code == 200, r.text
+        if until(job := r.json()):
+            return job
+        assert time.monotonic() < end, job
+        time.sleep(0.05)
+
+
+def test_two_server_processes_share_build_jobs(tmp_path):
+    """Two uvicorn processes (as two workers are) on one data dir: a build posted to A is
+    polled, listed and queried through B; a long build on A is cancelled through B."""
+    body = {
+        "voxel_size": 0.05,
+        "bounds": {"min": [-2, -2, -0.025], "max": [2, 2, 0.025]},
+        "orientation_divisions": 0,
+        "samples": 60_000,
+    }
+    base = "/robots/planar2/reachability"
+    with serve(tmp_path / "data") as a, serve(tmp_path / "data") as b:
+        r = httpx.post(a + base, json=body, timeout=30)
+        assert r.status_code == 202, r.text
+        job_id = r.json()["job_id"]
+        j = poll_live(f"{b}{base}/jobs/{job_id}", finished)
+        assert j["status"] == "done" and j["progress"]["samples_done"] == 60_000, j
+        assert poll_live(f"{a}{base}/jobs/{job_id}", finished) == j
+        listed = httpx.get(f"{b}{base}/jobs", timeout=10).json()["jobs"]
+        assert [x["job_id"] for x in listed] == [job_id]
+        assert httpx.get(f"{b}{base}/maps/{j['map_id']}", timeout=10).status_code == 200
+        # planar2 (l1 = 1.0, l2 = 0.8) reaches 0.2 ≤ r ≤ 1.8
+        pts = [[1.0, 0.0, 0.0], [0.0, 1.5, 0.0], [0.05, 0.0, 0.0], [1.95, 0.0, 0.0]]
+        q = httpx.post(
+            f"{b}{base}/query", json={"map_id": j["map_id"], "positions": pts}, timeout=10
+        )
+        assert q.status_code == 200 and q.json()["reachable"] == [True, True, False, False]
+        r = httpx.delete(f"{b}{base}/jobs/{job_id}", timeout=10)
+        assert r.status_code == 409 and r.json()["field"] == "job_id"  # already done
+
+        r = httpx.post(a + base, json=dict(body, samples=500_000_000), timeout=30)
+        assert r.status_code == 202, r.text
+        long_id = r.json()["job_id"]
+        poll_live(f"{b}{base}/jobs/{long_id}", lambda j: j["status"] == "running")
+        r = httpx.delete(f"{b}{base}/jobs/{long_id}", timeout=10)
+        assert r.status_code == 200 and r.json()["job_id"] == long_id
+        for server in (b, a):
+            j = poll_live(f"{server}{base}/jobs/{long_id}", finished)
+            assert j["status"] == "cancelled" and j["map_id"] is None, j
+        assert httpx.delete(f"{b}{base}/jobs/{long_id}", timeout=10).status_code == 200
+        maps = httpx.get(f"{b}{base}/maps", timeout=10).json()["maps"]
+        assert [m["map_id"] for m in maps] == [j["map_id"] for j in listed]
+        assert httpx.get(f"{b}{base}/jobs/{'0' * 32}", timeout=10).status_code == 404
