@@ -13,6 +13,7 @@ Middleware, outermost first (all pure ASGI, see docs/deployment.md):
 from __future__ import annotations
 
 import logging
+import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
@@ -22,6 +23,7 @@ from starlette.middleware.cors import CORSMiddleware
 from app import api, openapi
 from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
+from app.kinematics import ik_kernel
 from app.observability import ObservabilityMiddleware, configure_logging
 from app.registry import Registry
 from app.settings import Settings, get_settings
@@ -64,6 +66,8 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
             "stale_temporaries_removed": removed,
         },
     )
+    # Compile the IK kernels in the background: the first IK request does not wait for it.
+    threading.Thread(target=ik_kernel.warm_up, name="ik-warm-up", daemon=True).start()
     yield
     log.info("denavit stopped")
 

@@ -88,6 +88,7 @@ import numpy as np
 import pinocchio as pin
 from scipy.linalg.lapack import dposv as _posv
 
+from app.kinematics import ik_kernel
 from app.kinematics.analytic_ik import candidates
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
@@ -209,7 +210,17 @@ class Chain:
         self.closed_form: tuple | None = None
         self._robot = robot
         self._poses: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        self._poses_T: np.ndarray | None = None  # M transposed, for the compiled distances
         self.sample_poses()  # built now, so no query pays for it
+        #: The compiled loop's constants (:mod:`ik_kernel`), or None: the Python loop.
+        self.compiled = (
+            ik_kernel.CompiledChain.build(robot, frame, self.active)
+            if ik_kernel.available()
+            else None
+        )
+        if ik_kernel.available():
+            ik_kernel.warm_up()  # compiled now, outside any query's time budget
+        self.cont_mask = cont
 
     def sample_poses(self) -> tuple[np.ndarray, np.ndarray]:
         """Poses of the restart table: M = −2·[p | c·vec(R)] (N, 12) and ‖p‖² + 3c (N,).
@@ -234,16 +245,28 @@ class Chain:
             # float32: the ranking needs no more, and the product runs twice as fast.
             M = (-2.0 * W).astype(np.float32)
             self._poses = (M, (np.einsum("ij,ij->i", P, P) + 3.0 * _ROT_WEIGHT).astype(np.float32))
+            if ik_kernel.available():
+                self._poses_T = np.ascontiguousarray(M.T)
         return self._poses
 
     def sample_distances(self, target: pin.SE3) -> tuple[np.ndarray, float]:
         """Pose distances of the table samples to ``target``, up to the constant K_t returned
         with them (‖p − p_t‖² + c‖R − R_t‖²_F = d_i + K_t)."""
+        return self.sample_distances_argmin(target)[:2]
+
+    def sample_distances_argmin(self, target: pin.SE3) -> tuple[np.ndarray, float, int]:
+        """:meth:`sample_distances` and the index of the nearest sample."""
         M, W2 = self.sample_poses()
         pt = target.translation
-        d = M @ np.concatenate((pt, target.rotation.ravel())).astype(np.float32)
+        x = np.concatenate((pt, target.rotation.ravel())).astype(np.float32)
+        k_t = float(pt @ pt) + 3.0 * _ROT_WEIGHT
+        if self._poses_T is not None:
+            d = np.empty(_TABLE, dtype=np.float32)
+            i = ik_kernel.sample_distances(self._poses_T, W2, x, d)
+            return d, k_t, int(i)
+        d = M @ x
         d += W2
-        return d, float(pt @ pt) + 3.0 * _ROT_WEIGHT
+        return d, k_t, int(d.argmin())
 
     def nearest_samples(self, target: pin.SE3, k: int) -> np.ndarray:
         """Indices of the k table samples nearest ``target``, nearest first."""
@@ -453,6 +476,7 @@ class _Search:
         self.rng: np.random.Generator | None = None
         self.nearest: np.ndarray | None = None
         self.distances: np.ndarray | None = None
+        self.nearest_one = 0  # index of the nearest table sample, once distances are known
         # Best unconverged iterate (weighted task error energy).
         self.best_energy = math.inf
         self.best_q = q_seed.copy()
@@ -518,6 +542,76 @@ class _Search:
     # ------------------------------------------------------------------- hot loop
     def run(self, deadline: float, max_iterations: int | None) -> None:
         """Damped least squares from the seed, then from random restarts, until done."""
+        if self.full_pose and self.ch.compiled is not None:
+            self._run_compiled(deadline, max_iterations)
+        else:
+            self._run_python(deadline, max_iterations)
+
+    def _run_compiled(self, deadline: float, max_iterations: int | None) -> None:
+        """:meth:`_run_python` for the full pose with the attempts compiled
+        (:func:`ik_kernel.attempt`): the same iterates, restarts and budget, checked between
+        attempts (an attempt is at most ``_ATTEMPT_CAP`` iterations, a few tens of µs)."""
+        ch, cc = self.ch, self.ch.compiled
+        Rt = np.ascontiguousarray(self.target.rotation)
+        pt = np.ascontiguousarray(self.target.translation)
+        lo, hi = ch.clip_lo, ch.clip_hi
+        q_ref = np.ascontiguousarray(self.q_seed[ch.active])
+        redundant = ch.k > 6
+        clamp = _CLAMP and redundant
+        null_on = redundant and _NULL_GAIN > 0.0
+        tol_p2, tol_r2 = self.tol_p**2, self.tol_r**2
+        cap = max_iterations if max_iterations is not None else 1 << 62
+        best = np.array([self.best_energy])
+        best_q = q_ref.copy()
+        have_best = False
+        perf = time.perf_counter
+        attempt = ik_kernel.attempt
+        args = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, lo, hi, ch.cont_mask, Rt, pt, q_ref)
+        qa = q_ref.copy()
+        it = self.iterations
+        try:
+            if _NEAREST_FIRST and it < cap:
+                # The seed's pose against the nearest table sample: jump at once when the
+                # sample is much closer (one evaluation, counted as an iteration then).
+                ep2, er2, tr = ik_kernel.pose_error(qa, *args[:5], Rt, pt)
+                if not (ep2 <= tol_p2 and er2 <= tol_r2):
+                    d, k_t, i = ch.sample_distances_argmin(self.target)
+                    self.distances, self.nearest_one = d, i
+                    d_seed = ep2 + (2.0 * _ROT_WEIGHT) * (3.0 - tr)
+                    if d[i] + k_t < _NEAREST_RATIO * d_seed:
+                        it += 1
+                        if ep2 + er2 < best[0]:
+                            best[0], best_q[:], have_best = ep2 + er2, qa, True
+                        qa = np.array(self._restart(self.rng))
+            while True:
+                if it >= cap:
+                    return
+                if perf() >= deadline:
+                    self.timed_out = True
+                    return
+                before = best[0]
+                outcome, n = attempt(
+                    qa, *args,
+                    null_on and not self.restarts, clamp, tol_p2, tol_r2, cap - it,
+                    _STALL, _ATTEMPT_CAP, _DAMP, _MU, _NULL_GAIN, 1.0 / _NULL_ENERGY,
+                    _NULL_FLOOR, _MAX_STEP, best, best_q,
+                )  # fmt: skip
+                it += n
+                have_best = have_best or best[0] < before
+                if outcome == ik_kernel.CAPPED:
+                    return
+                if outcome == ik_kernel.CONVERGED:
+                    self.iterations = it
+                    if self.offer(qa.copy()) and self.done():
+                        return
+                qa = np.array(self._restart(self.rng))
+        finally:
+            self.iterations = it
+            if have_best and best[0] < self.best_energy:
+                self.best_energy, self.best_q = float(best[0]), self.wire(best_q)
+
+    def _run_python(self, deadline: float, max_iterations: int | None) -> None:
+        """The loop in Python around Pinocchio calls: every mode, every chain."""
         robot, ch = self.robot, self.ch
         model, data = robot.model, robot.data
         fid, cols = ch.frame_id, ch.cols
@@ -628,10 +722,10 @@ class _Search:
                     continue
                 # ---- first iterate far from the target: jump to the nearest table sample
                 if it == 1 and nearest_first and not conv and full_pose:
-                    d, k_t = ch.sample_distances(self.target)
-                    self.distances = d
+                    d, k_t, i_min = ch.sample_distances_argmin(self.target)
+                    self.distances, self.nearest_one = d, i_min
                     d_seed = ep2 + (2.0 * rot_w) * (3.0 - (Re[0, 0] + Re[1, 1] + Re[2, 2]))
-                    if d.min() + k_t < nearest_ratio * d_seed:
+                    if d[i_min] + k_t < nearest_ratio * d_seed:
                         qa = self._restart(self.rng)
                         attempt_iters, best_attempt, stall = 0, math.inf, 0
                         continue
@@ -709,9 +803,9 @@ class _Search:
         i = self.restarts - 1
         if self.full_pose and _NEAREST > 0:
             if self.distances is None:
-                self.distances = ch.sample_distances(self.target)[0]
+                self.distances, _, self.nearest_one = ch.sample_distances_argmin(self.target)
             if i == 0:  # the nearest sample alone: no need to rank the others yet
-                return ch.restart_table[int(self.distances.argmin())]
+                return ch.restart_table[self.nearest_one]
             if self.nearest is None:
                 self.nearest = _k_smallest(self.distances, _NEAREST)
             if i < len(self.nearest):

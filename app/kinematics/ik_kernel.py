@@ -1,0 +1,453 @@
+"""Compiled damped-least-squares attempts for serial chains (the hot loop of :mod:`ik`).
+
+The numeric solver in :mod:`app.kinematics.ik` spends its time in one loop: forward
+kinematics and the frame Jacobian at the current iterate, the pose error, one 6×6 linear
+solve, the joint-limit clamp. Written in Python around Pinocchio calls, an iteration costs
+some twenty interpreter round trips (about 15 µs); compiled with Numba as one function over
+the chain's constants, about 1 µs. This module is that function and the chain data it reads.
+Everything around it (restarts, the table of restart samples, the time budget, verifying a
+converged iterate with Pinocchio before it counts as a solution) stays in :mod:`ik`: a
+mistake here can cost solve rate or time, never a wrong answer.
+
+Kinematics
+----------
+The chain is :class:`app.kinematics.reachability.ChainJacobian`'s: every joint rewritten in
+a frame whose z axis is its axis, so with the running rotation R and position p (root
+frame), joint j applies its fixed placement (p += R·t_j, R = R·C_j), then its motion about
+or along z: R = R·Rz(q_j) (revolute, continuous) or p += q_j·R e_z (prismatic). After the
+last joint the frame's own placement (last_C, last_t). The Jacobian is the world one
+(Pinocchio LOCAL_WORLD_ALIGNED): column j = [z_j × (p − o_j); z_j] (revolute) or [z_j; 0]
+(prismatic), with z_j, o_j the axis and origin of joint j in the root frame.
+
+Error and step
+--------------
+Exactly those of :mod:`app.kinematics.ik` (full pose, unit weights): e = [p − p_t;
+log3(R R_tᵀ)], A = J Jᵀ + (c‖e‖² + μ) I, Δq = z − Jᵀ A⁻¹ (e + J z) with the null-space
+preference z on the attempt from the seed, the step capped at 2 (rad or m), continuous
+joints wrapped, every iterate clipped to the limits, joints pushed against a limit locked
+for the step on redundant chains. A is solved by Cholesky (it is symmetric positive
+definite: λ² ≥ μ > 0).
+
+Numba compiles on first use (a few seconds) and caches the machine code next to this file
+(or under ``NUMBA_CACHE_DIR``); :func:`available` says whether it can be used at all.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import threading
+
+import numpy as np
+
+try:  # pragma: no cover - numba is a pinned dependency; the fallback is the Python loop
+    import numba
+
+    _NUMBA = os.environ.get("DENAVIT_IK_COMPILED", "1") != "0"
+except ImportError:  # pragma: no cover
+    numba = None
+    _NUMBA = False
+
+#: Attempt outcomes returned by :func:`attempt`.
+CONVERGED, RESTART, CAPPED = 0, 1, 2
+
+
+def available() -> bool:
+    """Whether the compiled loop can be used (numba importable, not disabled by
+    ``DENAVIT_IK_COMPILED=0``)."""
+    return _NUMBA
+
+
+def _jit(fn):
+    if numba is None:  # pragma: no cover
+        return fn
+    return numba.njit(cache=True, nogil=True, fastmath=False)(fn)
+
+
+@_jit
+def _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, want_j):  # pragma: no cover
+    """Pose (R (3, 3), p (3,)) of the frame and, if ``want_j``, its world Jacobian J (6, k)
+    at the chain configuration ``qa`` (k,): written into R, p, J."""
+    k = qa.shape[0]
+    for i in range(3):
+        p[i] = 0.0
+        for j in range(3):
+            R[i, j] = 1.0 if i == j else 0.0
+    tmp = np.empty((3, 3))
+    for s in range(k):
+        # fixed placement: p += R t_s ; R = R C_s
+        for i in range(3):
+            p[i] += R[i, 0] * t[s, 0] + R[i, 1] * t[s, 1] + R[i, 2] * t[s, 2]
+        for i in range(3):
+            for j in range(3):
+                tmp[i, j] = R[i, 0] * C[s, 0, j] + R[i, 1] * C[s, 1, j] + R[i, 2] * C[s, 2, j]
+        for i in range(3):
+            for j in range(3):
+                R[i, j] = tmp[i, j]
+        if want_j:
+            # axis z_s (third column) and origin o_s, kept in J until p is final
+            for i in range(3):
+                J[3 + i, s] = R[i, 2]
+                J[i, s] = p[i]
+        if prism[s]:
+            for i in range(3):
+                p[i] += qa[s] * R[i, 2]
+        else:
+            c = math.cos(qa[s])
+            sn = math.sin(qa[s])
+            for i in range(3):
+                x = R[i, 0]
+                y = R[i, 1]
+                R[i, 0] = c * x + sn * y
+                R[i, 1] = c * y - sn * x
+    for i in range(3):
+        p[i] += R[i, 0] * last_t[0] + R[i, 1] * last_t[1] + R[i, 2] * last_t[2]
+    for i in range(3):
+        for j in range(3):
+            tmp[i, j] = R[i, 0] * last_C[0, j] + R[i, 1] * last_C[1, j] + R[i, 2] * last_C[2, j]
+    for i in range(3):
+        for j in range(3):
+            R[i, j] = tmp[i, j]
+    if want_j:
+        for s in range(k):
+            zx, zy, zz = J[3, s], J[4, s], J[5, s]
+            if prism[s]:
+                J[0, s], J[1, s], J[2, s] = zx, zy, zz
+                J[3, s] = J[4, s] = J[5, s] = 0.0
+            else:
+                dx, dy, dz = p[0] - J[0, s], p[1] - J[1, s], p[2] - J[2, s]
+                J[0, s] = zy * dz - zz * dy
+                J[1, s] = zz * dx - zx * dz
+                J[2, s] = zx * dy - zy * dx
+
+
+@_jit
+def _log3(M, out):  # pragma: no cover
+    """Rotation vector φ of the rotation M (|φ| ≤ π), into ``out``: the angle from
+    atan2(sin, cos) (accurate at every angle), the axis from the skew part, or near π from
+    the symmetric part."""
+    wx = M[2, 1] - M[1, 2]
+    wy = M[0, 2] - M[2, 0]
+    wz = M[1, 0] - M[0, 1]
+    c = 0.5 * (M[0, 0] + M[1, 1] + M[2, 2] - 1.0)
+    s = 0.5 * math.sqrt(wx * wx + wy * wy + wz * wz)
+    th = math.atan2(s, c)
+    if th < 1e-4:
+        f = 0.5 * (1.0 + th * th / 6.0)  # θ / (2 sin θ)
+        out[0], out[1], out[2] = f * wx, f * wy, f * wz
+    elif th < math.pi - 1e-3:
+        f = 0.5 * th / s
+        out[0], out[1], out[2] = f * wx, f * wy, f * wz
+    else:
+        # near π: k kᵀ = ((M + Mᵀ)/2 − cos θ·I)/(1 − cos θ); largest diagonal first
+        d = 1.0 - c
+        i = 0
+        if M[1, 1] > M[i, i]:
+            i = 1
+        if M[2, 2] > M[i, i]:
+            i = 2
+        w = (wx, wy, wz)
+        ki = math.sqrt(max(0.0, (M[i, i] - c) / d))
+        if w[i] < 0.0:
+            ki = -ki
+        for j in range(3):
+            if j == i:
+                out[j] = th * ki
+            else:
+                out[j] = th * (M[i, j] + M[j, i]) / (2.0 * d * ki)
+
+
+@_jit
+def _solve_spd(A, b, x):  # pragma: no cover
+    """x = A⁻¹ b for a symmetric positive definite A (m, m), by Cholesky (A is overwritten
+    by its factor)."""
+    m = A.shape[0]
+    for j in range(m):
+        d = A[j, j]
+        for k in range(j):
+            d -= A[j, k] * A[j, k]
+        d = math.sqrt(d)
+        A[j, j] = d
+        for i in range(j + 1, m):
+            v = A[i, j]
+            for k in range(j):
+                v -= A[i, k] * A[j, k]
+            A[i, j] = v / d
+    for i in range(m):
+        v = b[i]
+        for k in range(i):
+            v -= A[i, k] * x[k]
+        x[i] = v / A[i, i]
+    for i in range(m - 1, -1, -1):
+        v = x[i]
+        for k in range(i + 1, m):
+            v -= A[k, i] * x[k]
+        x[i] = v / A[i, i]
+
+
+@_jit
+def _dls(J, e, lam2, locked, nd):  # pragma: no cover
+    """nd = Jᵀ (J Jᵀ + λ² I)⁻¹ e over the unlocked columns (locked columns count as 0)."""
+    k = J.shape[1]
+    A = np.empty((6, 6))
+    for i in range(6):
+        for j in range(i + 1):
+            v = 0.0
+            for s in range(k):
+                if not locked[s]:
+                    v += J[i, s] * J[j, s]
+            A[i, j] = v
+            A[j, i] = v
+        A[i, i] += lam2
+    y = np.empty(6)
+    _solve_spd(A, e, y)
+    for s in range(k):
+        if locked[s]:
+            nd[s] = 0.0
+        else:
+            nd[s] = (
+                J[0, s] * y[0] + J[1, s] * y[1] + J[2, s] * y[2]
+                + J[3, s] * y[3] + J[4, s] * y[4] + J[5, s] * y[5]
+            )  # fmt: skip
+
+
+@_jit
+def _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa):  # pragma: no cover
+    """q_new = q_old − nd (step capped at max_step, continuous joints wrapped); qa = q_new
+    clipped to [lo, hi]. Returns whether the clip changed anything."""
+    k = q_old.shape[0]
+    n2 = 0.0
+    for s in range(k):
+        n2 += nd[s] * nd[s]
+    scale = 1.0
+    if n2 > max_step * max_step:
+        scale = max_step / math.sqrt(n2)
+    two_pi = 2.0 * math.pi
+    clipped = False
+    for s in range(k):
+        v = q_old[s] - scale * nd[s]
+        if cont[s]:
+            v = v + math.pi
+            v = v - two_pi * math.floor(v / two_pi) - math.pi
+        q_new[s] = v
+        if v < lo[s]:
+            v = lo[s]
+            clipped = True
+        elif v > hi[s]:
+            v = hi[s]
+            clipped = True
+        qa[s] = v
+    return clipped
+
+
+@_jit
+def pose_error(qa, C, t, prism, last_C, last_t, Rt, pt):  # pragma: no cover
+    """(‖p − p_t‖², ‖log3(R R_tᵀ)‖², trace(R R_tᵀ)) of the frame at ``qa``."""
+    k = qa.shape[0]
+    R = np.empty((3, 3))
+    p = np.empty(3)
+    J = np.empty((6, k))
+    _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, False)
+    Re = np.empty((3, 3))
+    for i in range(3):
+        for j in range(3):
+            Re[i, j] = R[i, 0] * Rt[j, 0] + R[i, 1] * Rt[j, 1] + R[i, 2] * Rt[j, 2]
+    phi = np.empty(3)
+    _log3(Re, phi)
+    ep2 = 0.0
+    for i in range(3):
+        ep2 += (p[i] - pt[i]) ** 2
+    return ep2, phi[0] ** 2 + phi[1] ** 2 + phi[2] ** 2, Re[0, 0] + Re[1, 1] + Re[2, 2]
+
+
+@_jit
+def attempt(  # pragma: no cover
+    qa, C, t, prism, last_C, last_t, lo, hi, cont, Rt, pt, q_ref,
+    null_on, clamp, tol_p2, tol_r2, max_iters, stall_limit, attempt_cap,
+    damp, mu, gain, null_scale, null_floor, max_step, best, best_q,
+):  # fmt: skip
+    """One attempt of damped least squares from ``qa`` (k,), updated in place.
+
+    Iterates until the pose error is within tolerance (returns ``CONVERGED``, ``qa`` the
+    converged iterate), the error stalls (no 10 % decrease of ‖e‖ in ``stall_limit``
+    iterations) or ``attempt_cap`` iterations pass (``RESTART``), or ``max_iters`` run out
+    (``CAPPED``). ``null_on`` adds the null-space pull towards ``q_ref``; ``clamp`` locks
+    joints pushed against a limit. ``best`` (1,) and ``best_q`` (k,) hold the lowest error
+    energy ‖e‖² of unconverged iterates seen so far, updated in place.
+
+    Returns (outcome, iterations evaluated).
+    """
+    k = qa.shape[0]
+    R = np.empty((3, 3))
+    p = np.empty(3)
+    J = np.empty((6, k))
+    Re = np.empty((3, 3))
+    e = np.empty(6)
+    phi = np.empty(3)
+    rhs = np.empty(6)
+    z = np.zeros(k)
+    nd = np.empty(k)
+    q_old = np.empty(k)
+    q_new = np.empty(k)
+    locked = np.zeros(k, dtype=np.bool_)
+    none_locked = np.zeros(k, dtype=np.bool_)
+    best_attempt = np.inf
+    stall = 0
+    it = 0
+    while True:
+        if it >= max_iters:
+            return CAPPED, it
+        _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, True)
+        it += 1
+        for i in range(3):
+            for j in range(3):
+                Re[i, j] = R[i, 0] * Rt[j, 0] + R[i, 1] * Rt[j, 1] + R[i, 2] * Rt[j, 2]
+        _log3(Re, phi)
+        for i in range(3):
+            e[i] = p[i] - pt[i]
+            e[3 + i] = phi[i]
+        ep2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2]
+        er2 = e[3] * e[3] + e[4] * e[4] + e[5] * e[5]
+        energy = ep2 + er2
+        if ep2 <= tol_p2 and er2 <= tol_r2:
+            return CONVERGED, it
+        if energy < best[0]:
+            best[0] = energy
+            for s in range(k):
+                best_q[s] = qa[s]
+        if energy < 0.81 * best_attempt:  # ‖e‖ decreased by 10 %
+            best_attempt = energy
+            stall = 0
+        else:
+            stall += 1
+            if stall >= stall_limit or it >= attempt_cap:
+                return RESTART, it
+        lam2 = damp * energy + mu
+        if null_on and energy > null_floor:
+            # Δq = z − Jᵀ A⁻¹ (e + J z): nd = −Δq = Jᵀ A⁻¹ (e + J z) − z
+            a = gain * min(1.0, energy * null_scale)
+            for s in range(k):
+                z[s] = (q_ref[s] - qa[s]) * a
+            for i in range(6):
+                v = e[i]
+                for s in range(k):
+                    v += J[i, s] * z[s]
+                rhs[i] = v
+            _dls(J, rhs, lam2, none_locked, nd)
+            for s in range(k):
+                nd[s] -= z[s]
+        else:
+            _dls(J, e, lam2, none_locked, nd)
+        for s in range(k):
+            q_old[s] = qa[s]
+        clipped = _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa)
+        if clamp and clipped:
+            n_locked = 0
+            for s in range(k):
+                locked[s] = (q_new[s] < lo[s] and q_old[s] <= lo[s]) or (
+                    q_new[s] > hi[s] and q_old[s] >= hi[s]
+                )
+                if locked[s]:
+                    n_locked += 1
+            if 0 < n_locked < k:
+                _dls(J, e, lam2, locked, nd)
+                _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa)
+
+
+@_jit
+def sample_distances(MT, W2, x, d):  # pragma: no cover
+    """d = W2 + Mᵀᵀ·x for the restart table (MT: (12, N) float32, one pass per column, so
+    the loops over N vectorise); returns the index of the smallest distance."""
+    n = d.shape[0]
+    for i in range(n):
+        d[i] = W2[i]
+    for j in range(MT.shape[0]):
+        c = x[j]
+        for i in range(n):
+            d[i] += MT[j, i] * c
+    best = 0
+    for i in range(1, n):
+        if d[i] < d[best]:
+            best = i
+    return best
+
+
+class CompiledChain:
+    """The constants :func:`attempt` reads for one (robot, frame), or ``None`` from
+    :meth:`build` when the chain is not a plain serial chain of 1-DoF joints."""
+
+    def __init__(self, C, t, prism, last_C, last_t) -> None:
+        self.C = np.ascontiguousarray(C, dtype=np.float64)
+        self.t = np.ascontiguousarray(t, dtype=np.float64)
+        self.prism = np.ascontiguousarray(prism, dtype=np.bool_)
+        self.last_C = np.ascontiguousarray(last_C, dtype=np.float64)
+        self.last_t = np.ascontiguousarray(last_t, dtype=np.float64)
+
+    @classmethod
+    def build(cls, robot, frame: str, active: np.ndarray) -> CompiledChain | None:
+        """The chain of ``frame`` if its joints, in chain order, are exactly ``active``
+        (wire indices) and all 1-DoF (no mimic, no multi-DoF joints); else ``None``."""
+        from app.kinematics.reachability import ChainJacobian
+
+        cj = ChainJacobian.build(robot, frame)
+        if cj is None or not np.array_equal(cj.wire, active) or not cj.steps:
+            return None
+        return cls(
+            np.array([s.C for s in cj.steps]),
+            np.array([s.t for s in cj.steps]),
+            np.array([s.prismatic for s in cj.steps]),
+            cj.last_C,
+            cj.last_t,
+        )
+
+    def pose(self, qa: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Rotation, position and world Jacobian at ``qa`` (for tests and diagnostics)."""
+        k = qa.shape[0]
+        R, p, J = np.empty((3, 3)), np.empty(3), np.empty((6, k))
+        _pose_jacobian(
+            np.ascontiguousarray(qa, dtype=np.float64),
+            self.C, self.t, self.prism, self.last_C, self.last_t, R, p, J, True,
+        )  # fmt: skip
+        return R, p, J
+
+
+def log3(M: np.ndarray) -> np.ndarray:
+    """Rotation vector of the rotation matrix ``M`` (for tests)."""
+    out = np.empty(3)
+    _log3(np.ascontiguousarray(M, dtype=np.float64), out)
+    return out
+
+
+_WARM = threading.Lock()
+_warmed = False
+
+
+def warm_up() -> None:
+    """Compile (or load from the cache) every kernel once, with the argument types the
+    solver uses: the first IK query then pays nothing for it. Idempotent, thread-safe."""
+    global _warmed
+    if _warmed or not _NUMBA:
+        return
+    with _WARM:
+        if _warmed:
+            return
+        k = 1
+        C = np.eye(3)[None].copy()
+        t = np.zeros((1, 3))
+        prism = np.zeros(1, dtype=np.bool_)
+        q = np.zeros(k)
+        lo, hi = np.full(k, -1.0), np.full(k, 1.0)
+        best = np.array([np.inf])
+        consts = (C, t, prism, np.eye(3), np.zeros(3))
+        pose_error(q, *consts, np.eye(3), np.zeros(3))
+        attempt(
+            q.copy(), *consts, lo, hi, prism, np.eye(3), np.zeros(3), q.copy(),
+            True, True, 1e-10, 1e-10, 1, 2, 20, 0.01, 1e-10, 0.2, 100.0, 1e-8, 2.0,
+            best, q.copy(),
+        )  # fmt: skip
+        f32 = np.float32
+        sample_distances(
+            np.zeros((12, 4), f32), np.zeros(4, f32), np.zeros(12, f32), np.empty(4, f32)
+        )
+        CompiledChain(*consts).pose(q)
+        _warmed = True

@@ -1,0 +1,134 @@
+"""The compiled IK loop (app.kinematics.ik_kernel) against independent references: its
+kinematics against Pinocchio, its rotation log against Pinocchio's and exp3, its table
+distances against NumPy, and the solver's answers on both loops against yourdfpy."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pinocchio as pin
+import pytest
+
+from app.kinematics import ik, ik_kernel
+from app.kinematics.fk import forward_kinematics
+from app.kinematics.jacobian import frame_jacobian
+from app.kinematics.models import RobotModel
+from tests.kinematics.chains import continuous_arm, rrp_like
+from tests.kinematics.test_ik import TOL, pose_error, random_q, reference_pose, se3
+
+
+def test_numba_is_used() -> None:
+    assert ik_kernel.available()
+
+
+@pytest.mark.parametrize(
+    ("robot_id", "frame"),
+    [("panda", "panda_link8"), ("ur5", "tool0"), ("kinova", None), ("stanford_arm", None),
+     ("rrp", None), ("armar1_arm", "dh_4"), ("panda_dh", "tool")],
+)  # fmt: skip
+def test_pose_and_jacobian_match_pinocchio(registry, robot_id: str, frame: str | None) -> None:
+    """Revolute, prismatic, offsets, mm/deg DH tables: pose and world Jacobian to 1e-12."""
+    robot = registry.get(robot_id)
+    frame = frame or robot.ee_frame
+    ch = ik.chain(robot, frame)
+    assert ch.compiled is not None
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        q = random_q(robot, rng)
+        R, p, J = ch.compiled.pose(q[ch.active])
+        T = forward_kinematics(robot, q, [frame])[frame]
+        np.testing.assert_allclose(R, T[:3, :3], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(p, T[:3, 3], rtol=0, atol=1e-12)
+        Jp = frame_jacobian(robot, q, frame, "world")[:, ch.active]
+        np.testing.assert_allclose(J, Jp, rtol=0, atol=1e-12)
+
+
+def test_hand_written_chains_with_prismatic_and_continuous_joints() -> None:
+    for urdf, frame in ((rrp_like(), "tip"), (continuous_arm(), None)):
+        robot = RobotModel("chain", urdf)
+        frame = frame or robot.ee_frame
+        ch = ik.chain(robot, frame)
+        assert ch.compiled is not None
+        for q in np.random.default_rng(5).uniform(-3.0, 3.0, (10, robot.n)):
+            q = np.clip(q, robot.lower, robot.upper)
+            R, p, J = ch.compiled.pose(q[ch.active])
+            T = forward_kinematics(robot, q, [frame])[frame]
+            np.testing.assert_allclose(R, T[:3, :3], atol=1e-12)
+            np.testing.assert_allclose(p, T[:3, 3], atol=1e-12)
+            np.testing.assert_allclose(J, frame_jacobian(robot, q, frame)[:, ch.active], atol=1e-12)
+
+
+def test_mimic_chains_take_the_python_loop(registry) -> None:
+    """panda_rightfinger moves with a mimic joint: not a plain serial chain."""
+    robot = registry.get("panda")
+    assert ik.chain(robot, "panda_rightfinger").compiled is None
+    q = robot.mid_range()
+    q[7] = 0.02
+    T = forward_kinematics(robot, q, ["panda_rightfinger"])["panda_rightfinger"]
+    res = ik.solve(robot, "panda_rightfinger", se3(T), timeout_ms=500)
+    assert res.success
+
+
+@pytest.mark.parametrize("angle", [0.0, 1e-12, 1e-6, 1e-4, 0.3, 2.0, math.pi - 1e-3,
+                                   math.pi - 1e-7, math.pi])  # fmt: skip
+def test_log3_against_pinocchio_and_exp3(angle: float) -> None:
+    rng = np.random.default_rng(int(angle * 1e6) % 1000)
+    for _ in range(20):
+        axis = rng.normal(size=3)
+        axis /= np.linalg.norm(axis)
+        R = pin.exp3(axis * angle)
+        phi = ik_kernel.log3(R)
+        assert np.linalg.norm(phi) == pytest.approx(angle, abs=1e-12)
+        np.testing.assert_allclose(pin.exp3(phi), R, atol=1e-12)
+        if angle < math.pi - 1e-3:  # at π both ±axis are the rotation vector
+            np.testing.assert_allclose(phi, pin.log3(R), atol=1e-12)
+
+
+def test_table_distances_match_numpy(registry) -> None:
+    robot = registry.get("panda")
+    ch = ik.chain(robot, "panda_link8")
+    M, W2 = ch.sample_poses()
+    rng = np.random.default_rng(9)
+    for _ in range(10):
+        target = pin.SE3(pin.exp3(rng.normal(size=3)), rng.uniform(-0.5, 0.5, 3))
+        d, k_t, i = ch.sample_distances_argmin(target)
+        x = np.concatenate((target.translation, target.rotation.ravel()))
+        exact = M.astype(float) @ x + W2 + k_t  # ‖p − p_t‖² + c‖R − R_t‖²_F per sample
+        np.testing.assert_allclose(d + k_t, exact, rtol=0, atol=1e-4)
+        assert exact[i] <= exact.min() + 1e-4
+
+
+@pytest.mark.parametrize("robot_id", ["panda", "kinova"])
+def test_both_loops_solve_and_agree_with_yourdfpy(registry, robot_id: str) -> None:
+    """The compiled and the Python loop on the same targets: every answer reaches its
+    target by yourdfpy's FK and stays within the limits."""
+    compiled = registry.get(robot_id)
+    python = RobotModel(compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
+                        srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame)  # fmt: skip
+    frame = compiled.ee_frame
+    assert ik.chain(compiled, frame).compiled is not None
+    ik.chain(python, frame).compiled = None
+    rng = np.random.default_rng(21)
+    for _ in range(25):
+        q_true = random_q(compiled, rng)
+        target = reference_pose(compiled, q_true, frame)
+        for robot in (compiled, python):
+            res = ik.solve(robot, frame, se3(target), timeout_ms=500, analytic=False)
+            assert res.success, robot is python
+            assert np.all(res.q >= robot.lower) and np.all(res.q <= robot.upper)
+            dp, dr = pose_error(reference_pose(robot, res.q, frame), target)
+            assert dp <= TOL and dr <= TOL
+
+
+def test_iteration_cap_and_best_effort_on_the_compiled_loop(registry) -> None:
+    """An unreachable target: the cap ends the search, the best iterate is reported with
+    its true error (Pinocchio FK), inside the limits."""
+    robot = registry.get("panda")
+    target = pin.SE3(np.eye(3), np.array([2.0, 0.0, 0.5]))  # Panda reaches ~0.86 m
+    res = ik.solve(robot, "panda_link8", target, timeout_ms=2000, max_iterations=60)
+    assert not res.success and res.status == "not_converged" and res.iterations == 60
+    assert np.all(res.q >= robot.lower) and np.all(res.q <= robot.upper)
+    T = forward_kinematics(robot, res.q, ["panda_link8"])["panda_link8"]
+    assert res.position_error == pytest.approx(np.linalg.norm(T[:3, 3] - [2.0, 0.0, 0.5]))
+    assert 1.0 < res.position_error < 1.3  # stretched towards the target
