@@ -58,6 +58,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics.ik_kernel import available as _compiled_available
+from app.kinematics.ik_kernel import jit
 from app.kinematics.models import RobotModel
 
 if TYPE_CHECKING:
@@ -332,6 +334,197 @@ def ur_solutions(
                 yield np.array([q1, q2, q3, q4, q5, q6])
 
 
+# ----------------------------------------------------------------- compiled UR closed form
+@jit
+def _sp4_nb(h, k, p, d, out):  # pragma: no cover
+    """:func:`sp4` into ``out`` (2,); returns the number of angles (0, 1 or 2)."""
+    kp0 = k[1] * p[2] - k[2] * p[1]
+    kp1 = k[2] * p[0] - k[0] * p[2]
+    kp2 = k[0] * p[1] - k[1] * p[0]
+    kdp = k[0] * p[0] + k[1] * p[1] + k[2] * p[2]
+    A = h[0] * (p[0] - kdp * k[0]) + h[1] * (p[1] - kdp * k[1]) + h[2] * (p[2] - kdp * k[2])
+    B = h[0] * kp0 + h[1] * kp1 + h[2] * kp2
+    C = kdp * (h[0] * k[0] + h[1] * k[1] + h[2] * k[2])
+    r = math.hypot(A, B)
+    if r < 1e-12:
+        return 0
+    x = (d - C) / r
+    if abs(x) > 1.0 + 1e-9:
+        return 0
+    x = min(1.0, max(-1.0, x))
+    phi = math.atan2(B, A)
+    a = math.acos(x)
+    out[0] = phi + a
+    if a < 1e-12:
+        return 1
+    out[1] = phi - a
+    return 2
+
+
+@jit
+def _sp1_nb(k, a, b):  # pragma: no cover
+    """:func:`sp1`: atan2((k × a)·b, a·b − (k·a)(k·b))."""
+    ka0 = k[1] * a[2] - k[2] * a[1]
+    ka1 = k[2] * a[0] - k[0] * a[2]
+    ka2 = k[0] * a[1] - k[1] * a[0]
+    ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    kak = (k[0] * a[0] + k[1] * a[1] + k[2] * a[2]) * (k[0] * b[0] + k[1] * b[1] + k[2] * b[2])
+    return math.atan2(ka0 * b[0] + ka1 * b[1] + ka2 * b[2], ab - kak)
+
+
+@jit
+def _rot_nb(k, theta):  # pragma: no cover
+    """Rodrigues: I + sin θ [k]× + (1 − cos θ) [k]×² (k unit)."""
+    c, s = math.cos(theta), math.sin(theta)
+    v = 1.0 - c
+    x, y, z = k[0], k[1], k[2]
+    R = np.empty((3, 3))
+    R[0, 0], R[0, 1], R[0, 2] = c + x * x * v, x * y * v - z * s, x * z * v + y * s
+    R[1, 0], R[1, 1], R[1, 2] = y * x * v + z * s, c + y * y * v, y * z * v - x * s
+    R[2, 0], R[2, 1], R[2, 2] = z * x * v - y * s, z * y * v + x * s, c + z * z * v
+    return R
+
+
+@jit
+def _circ(x, seed):  # pragma: no cover
+    """|x − seed| around the circle (as abs(math.remainder(x − seed, 2π)))."""
+    two_pi = 2.0 * math.pi
+    d = x - seed
+    return abs(d - two_pi * math.floor(d / two_pi + 0.5))
+
+
+@jit
+def _order2(vals, n, seed):  # pragma: no cover
+    """Two angles ordered by circular distance to ``seed`` (as :func:`_nearest_first`)."""
+    if n == 2 and _circ(vals[1], seed) < _circ(vals[0], seed):
+        vals[0], vals[1] = vals[1], vals[0]
+
+
+@jit
+def _ur_all(  # pragma: no cover
+    w, p, h, s, c0, MR, Mp, origin, u, v, r1, r2, sign2, Rt, pt, seed, out
+):
+    """Every UR-type branch (:func:`ur_solutions`, same order) into ``out`` (8, 6);
+    returns how many."""
+    Rd = Rt @ MR.T
+    c_loc = MR.T @ (c0 - Mp)
+    c_d = Rt @ c_loc + pt
+    c0_p4 = c0 - p[3]
+    l1 = math.hypot(r1[0], r1[1])
+    l2 = math.hypot(r2[0], r2[1])
+    beta = math.atan2(r2[1], r2[0]) - math.atan2(r1[1], r1[0])
+    q1s = np.empty(2)
+    q5s = np.empty(2)
+    n1 = _sp4_nb(c_d - p[0], w[0], h, h @ (c0 - p[0]), q1s)
+    _order2(q1s, n1, seed[0])
+    n = 0
+    for i1 in range(n1):
+        q1 = q1s[i1]
+        R1 = _rot_nb(w[0], q1)
+        R1h = R1 @ h
+        RdT_R1h = Rd.T @ R1h
+        n5 = _sp4_nb(h, w[4], w[5], R1h @ (Rd @ w[5]), q5s)
+        _order2(q5s, n5, seed[4])
+        arm_base = p[0] + R1.T @ (c_d - p[0])
+        for i5 in range(n5):
+            q5 = q5s[i5]
+            R5T = _rot_nb(w[4], q5).T.copy()
+            q6 = _sp1_nb(w[5], RdT_R1h, R5T @ h)
+            Rth = R1.T @ Rd @ _rot_nb(w[5], -q6) @ R5T
+            theta = _sp1_nb(h, u, Rth @ u)
+            wrist = arm_base - _rot_nb(h, theta) @ c0_p4
+            # planar 2-link (axes 2, 3) to the wrist point
+            d = wrist - origin
+            t0 = d @ u
+            t1 = d @ v
+            c2 = (t0 * t0 + t1 * t1 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
+            if abs(c2) > 1.0 + _REACH:
+                continue
+            c2 = min(1.0, max(-1.0, c2))
+            ac = math.acos(c2)
+            e1 = np.empty(2)
+            e2 = np.empty(2)
+            for j in range(2):
+                phi = ac if j == 0 else -ac
+                a = phi - beta
+                ca, sa = math.cos(a), math.sin(a)
+                wx = r1[0] + ca * r2[0] - sa * r2[1]
+                wy = r1[1] + sa * r2[0] + ca * r2[1]
+                e1[j] = math.atan2(t1, t0) - math.atan2(wy, wx)
+                e2[j] = sign2 * a
+            order = (0, 1)
+            if _circ(e2[1], seed[2]) < _circ(e2[0], seed[2]):
+                order = (1, 0)
+            for j in order:
+                q2, q3 = e1[j], e2[j]
+                out[n, 0] = q1
+                out[n, 1] = q2
+                out[n, 2] = q3
+                out[n, 3] = s[3] * (theta - q2 - s[2] * q3)
+                out[n, 4] = q5
+                out[n, 5] = q6
+                n += 1
+    return n
+
+
+@jit
+def _into_limits_nb(Q, n, lower, upper, seed):  # pragma: no cover
+    """:func:`into_limits` applied to the first n rows of Q (n, k), in place."""
+    two_pi = 2.0 * math.pi
+    for r in range(n):
+        for i in range(Q.shape[1]):
+            q = Q[r, i]
+            lo, hi = lower[i], upper[i]
+            wrapped = q + math.pi - two_pi * math.floor((q + math.pi) / two_pi) - math.pi
+            if not (math.isfinite(lo) and math.isfinite(hi)):
+                Q[r, i] = wrapped
+                continue
+            k_lo = math.ceil((lo - q) / two_pi - 1e-12)
+            k_hi = math.floor((hi - q) / two_pi + 1e-12)
+            if k_lo > k_hi:
+                Q[r, i] = wrapped
+                continue
+            best, best_d = 0.0, np.inf
+            for k in range(k_lo, k_hi + 1):
+                x = min(hi, max(lo, q + k * two_pi))
+                dd = abs(x - seed[i])
+                if dd < best_d:
+                    best, best_d = x, dd
+            Q[r, i] = best
+
+
+def ur_candidates_compiled(
+    geo: URType, target: pin.SE3, seed: np.ndarray, lower: np.ndarray, upper: np.ndarray
+) -> np.ndarray:
+    """The candidates of :func:`ur_solutions` (same order), moved into the limits as
+    :func:`into_limits` does, from the compiled form: an (m, 6) array, m ≤ 8."""
+    out = np.empty((8, 6))
+    a = geo.arm
+    c = np.ascontiguousarray
+    n = _ur_all(
+        geo.w, geo.p, geo.h, geo.s, geo.c0, c(geo.M.rotation), c(geo.M.translation),
+        a.origin, a.u, a.v, a.r1, a.r2, a.sign2,
+        c(target.rotation), c(target.translation), seed, out,
+    )  # fmt: skip
+    _into_limits_nb(out, n, lower, upper, seed)
+    return out[:n]
+
+
+def prepare(robot: RobotModel, ch: Chain) -> tuple[URType | None, Planar2 | None]:
+    """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
+    for its argument types, so that no query's budget pays for either."""
+    fid = ch.frame_id
+    forms = ch.closed_form = (
+        ur_geometry(robot, ch.active, fid),
+        planar2_geometry(robot, ch.active, fid),
+    )
+    ur = forms[0]
+    if ur is not None and _compiled_available():
+        seed = np.ascontiguousarray(robot.mid_range()[ch.active])
+        ur_candidates_compiled(ur, ur.M, seed, robot.lower[ch.active], robot.upper[ch.active])
+    return forms
+
+
 def candidates(
     robot: RobotModel, ch: Chain, target: pin.SE3, mode: str, seed: np.ndarray
 ) -> Iterator[np.ndarray] | None:
@@ -345,17 +538,15 @@ def candidates(
     active = ch.active
     forms = ch.closed_form
     if forms is None:  # first use: detect once per chain (idempotent, so races are benign)
-        fid = ch.frame_id
-        forms = ch.closed_form = (
-            ur_geometry(robot, active, fid),
-            planar2_geometry(robot, active, fid),
-        )
+        forms = prepare(robot, ch)
     ur, planar = forms
     if ur is None and planar is None:
         return None
     lo, hi = robot.lower[active], robot.upper[active]
     s = seed[active]
     raw: Iterable[np.ndarray] | None = None
+    if ur is not None and mode == "pose" and _compiled_available():
+        return iter(ur_candidates_compiled(ur, target, np.ascontiguousarray(s), lo, hi))
     if ur is not None and mode == "pose":
         raw = ur_solutions(ur, target, s)
     elif planar is not None and mode != "orientation":

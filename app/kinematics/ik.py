@@ -88,7 +88,7 @@ import numpy as np
 import pinocchio as pin
 from scipy.linalg.lapack import dposv as _posv
 
-from app.kinematics import ik_kernel
+from app.kinematics import analytic_ik, ik_kernel
 from app.kinematics.analytic_ik import candidates
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
@@ -220,6 +220,7 @@ class Chain:
         )
         if ik_kernel.available():
             ik_kernel.warm_up()  # compiled now, outside any query's time budget
+        analytic_ik.prepare(robot, self)
         self.cont_mask = cont
 
     def sample_poses(self) -> tuple[np.ndarray, np.ndarray]:

@@ -58,13 +58,14 @@ def available() -> bool:
     return _NUMBA
 
 
-def _jit(fn):
+def jit(fn):
+    """Numba's ``njit`` (cached, releasing the GIL), or ``fn`` itself without Numba."""
     if numba is None:  # pragma: no cover
         return fn
     return numba.njit(cache=True, nogil=True, fastmath=False)(fn)
 
 
-@_jit
+@jit
 def _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, want_j):  # pragma: no cover
     """Pose (R (3, 3), p (3,)) of the frame and, if ``want_j``, its world Jacobian J (6, k)
     at the chain configuration ``qa`` (k,): written into R, p, J."""
@@ -121,7 +122,7 @@ def _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, want_j):  # pragma:
                 J[2, s] = zx * dy - zy * dx
 
 
-@_jit
+@jit
 def _log3(M, out):  # pragma: no cover
     """Rotation vector φ of the rotation M (|φ| ≤ π), into ``out``: the angle from
     atan2(sin, cos) (accurate at every angle), the axis from the skew part, or near π from
@@ -157,7 +158,7 @@ def _log3(M, out):  # pragma: no cover
                 out[j] = th * (M[i, j] + M[j, i]) / (2.0 * d * ki)
 
 
-@_jit
+@jit
 def _solve_spd(A, b, x):  # pragma: no cover
     """x = A⁻¹ b for a symmetric positive definite A (m, m), by Cholesky (A is overwritten
     by its factor)."""
@@ -185,7 +186,7 @@ def _solve_spd(A, b, x):  # pragma: no cover
         x[i] = v / A[i, i]
 
 
-@_jit
+@jit
 def _dls(J, e, lam2, locked, nd):  # pragma: no cover
     """nd = Jᵀ (J Jᵀ + λ² I)⁻¹ e over the unlocked columns (locked columns count as 0)."""
     k = J.shape[1]
@@ -211,7 +212,7 @@ def _dls(J, e, lam2, locked, nd):  # pragma: no cover
             )  # fmt: skip
 
 
-@_jit
+@jit
 def _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa):  # pragma: no cover
     """q_new = q_old − nd (step capped at max_step, continuous joints wrapped); qa = q_new
     clipped to [lo, hi]. Returns whether the clip changed anything."""
@@ -240,7 +241,7 @@ def _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa):  # pragma: no cover
     return clipped
 
 
-@_jit
+@jit
 def pose_error(qa, C, t, prism, last_C, last_t, Rt, pt):  # pragma: no cover
     """(‖p − p_t‖², ‖log3(R R_tᵀ)‖², trace(R R_tᵀ)) of the frame at ``qa``."""
     k = qa.shape[0]
@@ -260,7 +261,7 @@ def pose_error(qa, C, t, prism, last_C, last_t, Rt, pt):  # pragma: no cover
     return ep2, phi[0] ** 2 + phi[1] ** 2 + phi[2] ** 2, Re[0, 0] + Re[1, 1] + Re[2, 2]
 
 
-@_jit
+@jit
 def attempt(  # pragma: no cover
     qa, C, t, prism, last_C, last_t, lo, hi, cont, Rt, pt, q_ref,
     null_on, clamp, tol_p2, tol_r2, max_iters, stall_limit, attempt_cap,
@@ -354,7 +355,7 @@ def attempt(  # pragma: no cover
                 _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa)
 
 
-@_jit
+@jit
 def sample_distances(MT, W2, x, d):  # pragma: no cover
     """d = W2 + Mᵀᵀ·x for the restart table (MT: (12, N) float32, one pass per column, so
     the loops over N vectorise); returns the index of the smallest distance."""

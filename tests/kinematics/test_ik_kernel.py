@@ -10,7 +10,7 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
-from app.kinematics import ik, ik_kernel
+from app.kinematics import analytic_ik, ik, ik_kernel
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
@@ -132,3 +132,30 @@ def test_iteration_cap_and_best_effort_on_the_compiled_loop(registry) -> None:
     T = forward_kinematics(robot, res.q, ["panda_link8"])["panda_link8"]
     assert res.position_error == pytest.approx(np.linalg.norm(T[:3, 3] - [2.0, 0.0, 0.5]))
     assert 1.0 < res.position_error < 1.3  # stretched towards the target
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), [("ur5", "tool0"), ("ur10", "tool0"),
+                                                 ("ur5_dh", "tool")])  # fmt: skip
+def test_compiled_ur_closed_form_equals_the_python_one(registry, robot_id, frame) -> None:
+    """Same branches, same order, same shifts into the limits as ur_solutions + into_limits
+    (whose answers test_ik checks against yourdfpy)."""
+    robot = registry.get(robot_id)
+    ch = ik.chain(robot, frame)
+    geo = ch.closed_form[0]
+    assert geo is not None
+    lo, hi = robot.lower[ch.active], robot.upper[ch.active]
+    rng = np.random.default_rng(17)
+    counts = set()
+    for _ in range(200):
+        target = se3(reference_pose(robot, random_q(robot, rng), frame))
+        seed = rng.uniform(-3.0, 3.0, 6)
+        expected = [
+            [analytic_ik.into_limits(float(x), lo[i], hi[i], seed[i]) for i, x in enumerate(q)]
+            for q in analytic_ik.ur_solutions(geo, target, seed)
+        ]
+        got = analytic_ik.ur_candidates_compiled(geo, target, seed, lo, hi)
+        assert got.shape == (len(expected), 6)
+        if expected:
+            np.testing.assert_allclose(got, expected, rtol=0, atol=1e-9)
+        counts.add(len(expected))
+    assert 8 in counts
