@@ -15,8 +15,11 @@ COPY app ./app
 COPY dh2urdf ./dh2urdf
 COPY robots ./robots
 # The runtime dependencies are the == pins of pyproject.toml's [project] dependencies.
+# The IK kernels are compiled here (Numba) into a cache the runtime user may refresh.
+ENV NUMBA_CACHE_DIR=/opt/numba-cache
 RUN /opt/venv/bin/pip install --no-cache-dir . \
-    && /opt/venv/bin/python -c "import app.main, pinocchio, coal"
+    && /opt/venv/bin/python -c "import app.main, pinocchio, coal" \
+    && /opt/venv/bin/python -c "from app.kinematics import ik; ik.warm_up()"
 
 # ---- runtime: the virtualenv only, as an unprivileged user --------------------------
 FROM python:3.11-slim-bookworm
@@ -26,11 +29,13 @@ ENV PATH=/opt/venv/bin:$PATH \
     DENAVIT_HOST=0.0.0.0 \
     DENAVIT_PORT=8000 \
     DENAVIT_WORKERS=2 \
-    DENAVIT_DATA_DIR=/data
+    DENAVIT_DATA_DIR=/data \
+    NUMBA_CACHE_DIR=/opt/numba-cache
 RUN useradd --system --no-log-init --uid 10001 --user-group --create-home denavit \
     && mkdir -p /data \
     && chown denavit:denavit /data
 COPY --from=build /opt/venv /opt/venv
+COPY --from=build --chown=10001:10001 /opt/numba-cache /opt/numba-cache
 USER 10001:10001
 WORKDIR /home/denavit
 VOLUME ["/data"]

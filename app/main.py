@@ -23,7 +23,7 @@ from starlette.middleware.cors import CORSMiddleware
 from app import api, openapi
 from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
-from app.kinematics import ik_kernel
+from app.kinematics import ik
 from app.observability import ObservabilityMiddleware, configure_logging
 from app.registry import Registry
 from app.settings import Settings, get_settings
@@ -67,7 +67,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         },
     )
     # Compile the IK kernels in the background: the first IK request does not wait for it.
-    threading.Thread(target=ik_kernel.warm_up, name="ik-warm-up", daemon=True).start()
+    threading.Thread(target=ik.warm_up, name="ik-warm-up", daemon=True).start()
     yield
     log.info("denavit stopped")
 

@@ -234,6 +234,9 @@ def test_build_and_run_steps_outside_a_container(tmp_path) -> None:
             (site / "_denavit_test_deps.pth").write_text(pth)
 
     _run_stage(BUILD, mapper, env, link_dependencies)
+    # The IK kernels were compiled at build time into the cache the image ships.
+    cache = Path(mapper(BUILD.env()["NUMBA_CACHE_DIR"]))
+    assert cache.is_relative_to(root) and list(cache.rglob("*.nbi")), "no compiled IK kernels"
 
     final_env = {k: v for k, v in env.items() if k == "HOME" or k == "LANG"}
     final_env["PATH"] = "/usr/local/bin:/usr/bin:/bin"

@@ -510,6 +510,19 @@ def ur_candidates_compiled(
     return out[:n]
 
 
+def warm_up() -> None:
+    """Compile the UR closed form for the argument types :func:`prepare` passes (C-ordered
+    float64 arrays), from dummy geometry."""
+    if not _compiled_available():
+        return
+    z3, e3 = np.zeros(3), np.eye(3)
+    _ur_all(
+        np.zeros((6, 3)), np.zeros((6, 3)), z3, np.ones(6), z3, e3, z3,
+        z3, z3, z3, np.ones(2), np.ones(2), 1.0, e3, z3, np.zeros(6), np.empty((8, 6)),
+    )  # fmt: skip
+    _into_limits_nb(np.zeros((8, 6)), 0, np.zeros(6), np.zeros(6), np.zeros(6))
+
+
 def prepare(robot: RobotModel, ch: Chain) -> tuple[URType | None, Planar2 | None]:
     """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
     for its argument types, so that no query's budget pays for either."""

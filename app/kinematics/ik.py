@@ -218,8 +218,7 @@ class Chain:
             if ik_kernel.available()
             else None
         )
-        if ik_kernel.available():
-            ik_kernel.warm_up()  # compiled now, outside any query's time budget
+        warm_up()  # compiled now, outside any query's time budget
         analytic_ik.prepare(robot, self)
         self.cont_mask = cont
 
@@ -286,6 +285,15 @@ def _as_slice(idx: np.ndarray) -> slice | np.ndarray:
     if idx.size and np.array_equal(idx, np.arange(idx[0], idx[0] + idx.size)):
         return slice(int(idx[0]), int(idx[0]) + idx.size)
     return idx
+
+
+def warm_up() -> None:
+    """Compile (or load from Numba's cache) the solver's compiled parts: the DLS attempt
+    (:mod:`ik_kernel`) and the UR closed form. Idempotent; a few seconds the first time on
+    a machine, well under one from the cache."""
+    if ik_kernel.available() and not ik_kernel.warmed():
+        ik_kernel.warm_up()
+        analytic_ik.warm_up()
 
 
 def chain(robot: RobotModel, frame: str) -> Chain:

@@ -423,6 +423,11 @@ _WARM = threading.Lock()
 _warmed = False
 
 
+def warmed() -> bool:
+    """Whether :func:`warm_up` has run in this process."""
+    return _warmed
+
+
 def warm_up() -> None:
     """Compile (or load from the cache) every kernel once, with the argument types the
     solver uses: the first IK query then pays nothing for it. Idempotent, thread-safe."""
