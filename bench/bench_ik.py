@@ -16,7 +16,9 @@ time is the client's round trip.
 Environment: ``DENAVIT_BENCH_IK_N`` (targets per robot in process, default 10000),
 ``DENAVIT_BENCH_IK_HTTP`` (requests per robot over HTTP, default 300),
 ``DENAVIT_BENCH_IK_ROBOTS`` (comma-separated ``id`` or ``id:frame``; default panda:panda_link8,
-ur5:tool0 and every DH robot of the registry with its ``tool`` frame).
+ur5:tool0 and every DH robot of the registry with its ``tool`` frame),
+``DENAVIT_BENCH_IK_AB`` (targets of the compiled-versus-Python loop comparison, default 2000;
+0 skips it).
 """
 
 from __future__ import annotations
@@ -141,6 +143,38 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
     return rows
 
 
+def loops_side_by_side(reg: Registry, n: int) -> list[tuple]:
+    """The numeric solver (closed forms off) with its compiled loop and with its Python loop
+    on the same targets, alternating target by target so that load affects both alike:
+    solve rate and mean / p50 thread CPU time (ms), and mean iterations."""
+    rows = []
+    for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0"), ("puma560", None)):
+        compiled = reg.get(rid)
+        frame = frame or compiled.ee_frame
+        python = RobotModel(
+            compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
+            srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame,
+        )  # fmt: skip
+        if ik.chain(compiled, frame).compiled is None:
+            continue
+        ik.chain(python, frame).compiled = None
+        goals = targets(compiled, frame, n, seed=11)
+        cpu = {"compiled": np.empty(n), "python": np.empty(n)}
+        ok = {"compiled": 0, "python": 0}
+        its = {"compiled": 0, "python": 0}
+        for i, T in enumerate(goals):
+            for name, robot in (("compiled", compiled), ("python", python)):
+                c0 = time.thread_time()
+                res = ik.solve(robot, frame, T, timeout_ms=20 * BUDGET_MS, analytic=False)
+                cpu[name][i] = time.thread_time() - c0
+                ok[name] += res.success and cpu[name][i] <= BUDGET_MS * 1e-3
+                its[name] += res.iterations
+        for name in ("compiled", "python"):
+            c = cpu[name] * 1e3
+            rows.append((rid, name, ok[name] / n, c.mean(), float(np.median(c)), its[name] / n))
+    return rows
+
+
 def calibration() -> float:
     """Best-of-5 time (µs) of a 6×6 ``np.linalg.solve``: a yardstick of the machine's load."""
     A = np.eye(6) * 2.0
@@ -239,6 +273,14 @@ def main() -> None:
         f"\ncalibration after the run: 6×6 np.linalg.solve {calibration():.2f} µs "
         "(best of 5 × 20000; the same machine unloaded: ≈ 4.3 µs)"
     )
+    n_ab = int(os.environ.get("DENAVIT_BENCH_IK_AB", "2000"))
+    if n_ab > 0:
+        print(f"\n### Compiled and Python loop, same {n_ab} targets, alternating (CPU time)\n")
+        print("| robot | loop | solve rate, ≤ 5 ms CPU | mean CPU (ms) | p50 CPU (ms) "
+              "| iterations mean |")  # fmt: skip
+        print("|---|---|---|---|---|---|")
+        for rid, name, rate, mean, p50, its in loops_side_by_side(reg, n_ab):
+            print(f"| {rid} | {name} | {100 * rate:.2f}% | {mean:.3f} | {p50:.3f} | {its:.1f} |")
     if n_http > 0:
         print(f"\n### Over HTTP: {n_http} requests per robot, uvicorn 1 worker, loopback\n")
         print("| robot | requests | solve rate | mean round trip (ms) | p50 (ms) | p99 (ms) "
