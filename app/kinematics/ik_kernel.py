@@ -35,7 +35,6 @@ Numba compiles on first use (a few seconds) and caches the machine code next to 
 from __future__ import annotations
 
 import math
-import os
 import threading
 
 import numpy as np
@@ -43,7 +42,7 @@ import numpy as np
 try:  # pragma: no cover - numba is a pinned dependency; the fallback is the Python loop
     import numba
 
-    _NUMBA = os.environ.get("DENAVIT_IK_COMPILED", "1") != "0"
+    _NUMBA = True
 except ImportError:  # pragma: no cover
     numba = None
     _NUMBA = False
@@ -53,8 +52,7 @@ CONVERGED, RESTART, CAPPED = 0, 1, 2
 
 
 def available() -> bool:
-    """Whether the compiled loop can be used (numba importable, not disabled by
-    ``DENAVIT_IK_COMPILED=0``)."""
+    """Whether the compiled loop can be used (numba importable)."""
     return _NUMBA
 
 
