@@ -15,10 +15,6 @@
 from __future__ import annotations
 
 import os
-import socket
-import subprocess
-import sys
-import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 
@@ -28,6 +24,7 @@ import pinocchio as pin
 
 from app.kinematics.collision import collision_model
 from app.registry import Registry
+from bench._http import serve
 
 READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
 OBSTACLES = [
@@ -82,12 +79,6 @@ def in_process(n: int = 300) -> list[tuple]:
     return [_mode_row(robot, mode, qs) for mode in ("mesh", "convex")]
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def _rate(client: httpx.Client, path: str, body: dict, seconds: float, cap: int) -> float:
     client.post(path, json=body).raise_for_status()  # warm-up (model build)
     count, t0 = 0, time.perf_counter()
@@ -98,65 +89,43 @@ def _rate(client: httpx.Client, path: str, body: dict, seconds: float, cap: int)
 
 
 def over_http(seconds: float = 4.0, cap: int = 20_000) -> list[tuple[str, float, str]]:
-    port = _free_port()
-    with tempfile.TemporaryDirectory() as data_dir:
-        env = {**os.environ, "DENAVIT_DATA_DIR": data_dir, "DENAVIT_LOG_LEVEL": "warning"}
-        server = subprocess.Popen(
-            [sys.executable, "-m", "uvicorn", "app.main:app", "--host", "127.0.0.1",
-             "--port", str(port), "--log-level", "warning", "--no-access-log"],
-            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-        )  # fmt: skip
-        try:
-            base = f"http://127.0.0.1:{port}"
-            deadline = time.time() + 60
-            while True:
-                try:
-                    httpx.get(base + "/health", timeout=1.0)
-                    break
-                except httpx.HTTPError:
-                    if time.time() > deadline or server.poll() is not None:
-                        raise RuntimeError("uvicorn did not start") from None
-                    time.sleep(0.2)
-            rng = np.random.default_rng(1)
-            robot = Registry().get("panda")
-            batch = rng.uniform(robot.lower, robot.upper, (100, robot.n)).tolist()
-            path = "/robots/panda/collisions"
-            cases = [
-                ("baseline: POST /robots/panda/fk", "/robots/panda/fk", {"q": READY}),
-                ("self, meshes", path, {"q": READY}),
-                ("self, convex hulls", path, {"q": READY, "geometry": "convex"}),
-                ("self + 3 obstacles, meshes", path, {"q": READY, "obstacles": OBSTACLES}),
-                ("self + 3 obstacles, distances, hulls", path,
-                 {"q": READY, "obstacles": OBSTACLES, "distances": True, "geometry": "convex"}),
-                ("batch of 100, meshes", path + "/batch", {"configurations": batch}),
-                ("batch of 100, hulls", path + "/batch",
-                 {"configurations": batch, "geometry": "convex"}),
-            ]  # fmt: skip
-            out = []
-            with httpx.Client(base_url=base, timeout=30.0) as client:
-                for name, p, body in cases:
-                    rate = _rate(client, p, body, seconds, cap)
-                    per = "configurations/s: %.0f" % (rate * 100) if "batch" in name else ""
-                    out.append((name, rate, per))
+    with serve(log_level="warning", access_log="false") as server:
+        base = server.url
+        rng = np.random.default_rng(1)
+        robot = Registry().get("panda")
+        batch = rng.uniform(robot.lower, robot.upper, (100, robot.n)).tolist()
+        path = "/robots/panda/collisions"
+        cases = [
+            ("baseline: POST /robots/panda/fk", "/robots/panda/fk", {"q": READY}),
+            ("self, meshes", path, {"q": READY}),
+            ("self, convex hulls", path, {"q": READY, "geometry": "convex"}),
+            ("self + 3 obstacles, meshes", path, {"q": READY, "obstacles": OBSTACLES}),
+            ("self + 3 obstacles, distances, hulls", path,
+             {"q": READY, "obstacles": OBSTACLES, "distances": True, "geometry": "convex"}),
+            ("batch of 100, meshes", path + "/batch", {"configurations": batch}),
+            ("batch of 100, hulls", path + "/batch",
+             {"configurations": batch, "geometry": "convex"}),
+        ]  # fmt: skip
+        out = []
+        with httpx.Client(base_url=base, timeout=30.0) as client:
+            for name, p, body in cases:
+                rate = _rate(client, p, body, seconds, cap)
+                per = "configurations/s: %.0f" % (rate * 100) if "batch" in name else ""
+                out.append((name, rate, per))
 
-            def worker(_: int) -> int:
-                with httpx.Client(base_url=base, timeout=30.0) as c:
-                    n, t0 = 0, time.perf_counter()
-                    while time.perf_counter() - t0 < seconds and n < cap:
-                        c.post(path, json={"q": READY}).raise_for_status()
-                        n += 1
-                    return n
+        def worker(_: int) -> int:
+            with httpx.Client(base_url=base, timeout=30.0) as c:
+                n, t0 = 0, time.perf_counter()
+                while time.perf_counter() - t0 < seconds and n < cap:
+                    c.post(path, json={"q": READY}).raise_for_status()
+                    n += 1
+                return n
 
-            t0 = time.perf_counter()
-            with ThreadPoolExecutor(4) as pool:
-                total = sum(pool.map(worker, range(4)))
-            out.append(
-                ("self, meshes, 4 concurrent clients", total / (time.perf_counter() - t0), "")
-            )
-            return out
-        finally:
-            server.terminate()
-            server.wait(10)
+        t0 = time.perf_counter()
+        with ThreadPoolExecutor(4) as pool:
+            total = sum(pool.map(worker, range(4)))
+        out.append(("self, meshes, 4 concurrent clients", total / (time.perf_counter() - t0), ""))
+        return out
 
 
 def main() -> None:

@@ -25,10 +25,7 @@ from __future__ import annotations
 
 import math
 import os
-import socket
-import subprocess
 import sys
-import tempfile
 import time
 
 import httpx
@@ -39,6 +36,7 @@ from app.kinematics import ik
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion
 from app.registry import Registry
+from bench._http import serve
 
 TOL = 1e-5
 BUDGET_MS = 5.0
@@ -188,65 +186,39 @@ def calibration() -> float:
     return best
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def over_http(reg: Registry, n: int) -> list[tuple]:
-    port = _free_port()
     rows = []
-    with tempfile.TemporaryDirectory() as data_dir:
-        env = {**os.environ, "DENAVIT_DATA_DIR": data_dir, "DENAVIT_LOG_LEVEL": "warning"}
-        server = subprocess.Popen(
-            [sys.executable, "-m", "uvicorn", "app.main:app", "--host", "127.0.0.1",
-             "--port", str(port), "--log-level", "warning", "--no-access-log"],
-            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-        )  # fmt: skip
-        try:
-            base = f"http://127.0.0.1:{port}"
-            deadline = time.time() + 60
-            while True:
-                try:
-                    httpx.get(base + "/health", timeout=1.0)
-                    break
-                except httpx.HTTPError:
-                    if time.time() > deadline or server.poll() is not None:
-                        raise RuntimeError("uvicorn did not start") from None
-                    time.sleep(0.2)
-            with httpx.Client(base_url=base, timeout=30.0) as client:
-                for rid, frame in _chains(reg):
-                    robot = reg.get(rid)
-                    goals = targets(robot, frame, n, seed=7)
-                    bodies = [
-                        {
-                            "frame": frame,
-                            "target": {
-                                "position": T.translation.tolist(),
-                                "orientation": matrix_to_quaternion(T.rotation).tolist(),
-                            },
-                        }
-                        for T in goals
-                    ]
-                    client.post(f"/robots/{rid}/ik", json=bodies[0]).raise_for_status()
-                    wall = np.empty(n)
-                    server_ms = np.empty(n)
-                    ok = 0
-                    for i, (body, T) in enumerate(zip(bodies, goals, strict=True)):
-                        t0 = time.perf_counter()
-                        r = client.post(f"/robots/{rid}/ik", json=body)
-                        wall[i] = time.perf_counter() - t0
-                        r.raise_for_status()
-                        out = r.json()
-                        server_ms[i] = out["solve_time_ms"]
-                        if out["success"] and out["solve_time_ms"] <= BUDGET_MS:
-                            ok += _verify(robot, frame, np.array(out["q"]), T)
-                    mean, p50, p99 = _stats(wall * 1e3)
-                    rows.append((rid, n, ok / n, mean, p50, p99, float(server_ms.mean())))
-        finally:
-            server.terminate()
-            server.wait(10)
+    with serve(log_level="warning", access_log="false") as server:
+        base = server.url
+        with httpx.Client(base_url=base, timeout=30.0) as client:
+            for rid, frame in _chains(reg):
+                robot = reg.get(rid)
+                goals = targets(robot, frame, n, seed=7)
+                bodies = [
+                    {
+                        "frame": frame,
+                        "target": {
+                            "position": T.translation.tolist(),
+                            "orientation": matrix_to_quaternion(T.rotation).tolist(),
+                        },
+                    }
+                    for T in goals
+                ]
+                client.post(f"/robots/{rid}/ik", json=bodies[0]).raise_for_status()
+                wall = np.empty(n)
+                server_ms = np.empty(n)
+                ok = 0
+                for i, (body, T) in enumerate(zip(bodies, goals, strict=True)):
+                    t0 = time.perf_counter()
+                    r = client.post(f"/robots/{rid}/ik", json=body)
+                    wall[i] = time.perf_counter() - t0
+                    r.raise_for_status()
+                    out = r.json()
+                    server_ms[i] = out["solve_time_ms"]
+                    if out["success"] and out["solve_time_ms"] <= BUDGET_MS:
+                        ok += _verify(robot, frame, np.array(out["q"]), T)
+                mean, p50, p99 = _stats(wall * 1e3)
+                rows.append((rid, n, ok / n, mean, p50, p99, float(server_ms.mean())))
     return rows
 
 
