@@ -3,10 +3,30 @@
 from __future__ import annotations
 
 
-def planar_2link(l1: float = 1.0, l2: float = 0.7) -> str:
-    """Two revolute z joints, links along x: x = l1c1 + l2c12, y = l1s1 + l2s12."""
+def planar_2link(
+    l1: float = 1.0,
+    l2: float = 0.7,
+    *,
+    base_xyz: tuple[float, float, float] | None = None,
+    base_rpy: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    limit: float = 3.14159,
+    name: str = "planar2",
+) -> str:
+    """Two revolute z joints, links along x, a fixed ``tip`` frame at the end of link 2:
+    x = l1c1 + l2c12, y = l1s1 + l2s12 in the ``base`` frame. With ``base_xyz``, the root is
+    a ``world`` link and ``base`` hangs from it at (base_xyz, base_rpy)."""
+    root = ""
+    if base_xyz is not None:
+        bx, by, bz = base_xyz
+        br, bp, byaw = base_rpy
+        root = f"""
+  <link name="world"/>
+  <joint name="base_joint" type="fixed">
+    <parent link="world"/><child link="base"/>
+    <origin xyz="{bx!r} {by!r} {bz!r}" rpy="{br!r} {bp!r} {byaw!r}"/>
+  </joint>"""
     return f"""<?xml version="1.0"?>
-<robot name="planar2">
+<robot name="{name}">{root}
   <link name="base"/>
   <link name="link1"/>
   <link name="link2"/>
@@ -14,12 +34,12 @@ def planar_2link(l1: float = 1.0, l2: float = 0.7) -> str:
   <joint name="j1" type="revolute">
     <parent link="base"/><child link="link1"/>
     <origin xyz="0 0 0" rpy="0 0 0"/><axis xyz="0 0 1"/>
-    <limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
+    <limit lower="{-limit!r}" upper="{limit!r}" velocity="1" effort="1"/>
   </joint>
   <joint name="j2" type="revolute">
     <parent link="link1"/><child link="link2"/>
     <origin xyz="{l1!r} 0 0" rpy="0 0 0"/><axis xyz="0 0 1"/>
-    <limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
+    <limit lower="{-limit!r}" upper="{limit!r}" velocity="1" effort="1"/>
   </joint>
   <joint name="tip_joint" type="fixed">
     <parent link="link2"/><child link="tip"/>

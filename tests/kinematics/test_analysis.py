@@ -18,6 +18,7 @@ from app.kinematics.analysis import (
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
+from tests.kinematics.chains import planar_2link
 
 L1, L2 = 0.9, 0.6
 
@@ -29,34 +30,11 @@ def planar2_urdf(
     base_rpy: tuple[float, float, float] = (0.0, 0.0, 0.0),
     limit: float = math.pi,
 ) -> str:
-    """Planar 2-link arm: a fixed base joint (world → base), two revolute z joints, links
-    along x, a fixed ``tip`` frame at the end of link 2; x = l1c1 + l2c12, y = l1s1 + l2s12
-    in the base frame."""
-    bx, by, bz = base_xyz
-    br, bp, byaw = base_rpy
-    return f"""<?xml version="1.0"?>
-<robot name="planar2_test">
-  <link name="world"/><link name="base"/><link name="link1"/><link name="link2"/>
-  <link name="tip"/>
-  <joint name="base_joint" type="fixed">
-    <parent link="world"/><child link="base"/>
-    <origin xyz="{bx!r} {by!r} {bz!r}" rpy="{br!r} {bp!r} {byaw!r}"/>
-  </joint>
-  <joint name="j1" type="revolute">
-    <parent link="base"/><child link="link1"/>
-    <origin xyz="0 0 0" rpy="0 0 0"/><axis xyz="0 0 1"/>
-    <limit lower="{-limit!r}" upper="{limit!r}" velocity="1" effort="1"/>
-  </joint>
-  <joint name="j2" type="revolute">
-    <parent link="link1"/><child link="link2"/>
-    <origin xyz="{l1!r} 0 0" rpy="0 0 0"/><axis xyz="0 0 1"/>
-    <limit lower="{-limit!r}" upper="{limit!r}" velocity="1" effort="1"/>
-  </joint>
-  <joint name="tip_joint" type="fixed">
-    <parent link="link2"/><child link="tip"/>
-    <origin xyz="{l2!r} 0 0" rpy="0 0 0"/>
-  </joint>
-</robot>"""
+    """Planar 2-link arm on a fixed base joint (world → base): x = l1c1 + l2c12,
+    y = l1s1 + l2s12 in the base frame (tests/kinematics/chains.py)."""
+    return planar_2link(
+        l1, l2, base_xyz=base_xyz, base_rpy=base_rpy, limit=limit, name="planar2_test"
+    )
 
 
 @pytest.fixture(scope="module")
