@@ -57,10 +57,19 @@ def available() -> bool:
 
 
 def jit(fn):
-    """Numba's ``njit`` (cached, releasing the GIL), or ``fn`` itself without Numba."""
+    """Numba's ``njit`` (releasing the GIL), or ``fn`` itself without Numba.
+
+    Cached on disk when Numba finds a writable place (``NUMBA_CACHE_DIR``, next to the
+    sources, or the user's cache directory); where it finds none (a read-only install, no
+    home directory) Numba refuses ``cache=True`` at import, and the kernels are compiled
+    in memory by every process instead: slower start, same service.
+    """
     if numba is None:  # pragma: no cover
         return fn
-    return numba.njit(cache=True, nogil=True, fastmath=False)(fn)
+    try:
+        return numba.njit(cache=True, nogil=True)(fn)
+    except RuntimeError:  # "cannot cache function ...: no locator available"
+        return numba.njit(cache=False, nogil=True)(fn)
 
 
 @jit

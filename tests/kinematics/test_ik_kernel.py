@@ -159,3 +159,21 @@ def test_compiled_ur_closed_form_equals_the_python_one(registry, robot_id, frame
             np.testing.assert_allclose(got, expected, rtol=0, atol=1e-9)
         counts.add(len(expected))
     assert 8 in counts
+
+
+def test_jit_without_a_writable_cache_still_compiles(monkeypatch) -> None:
+    """Numba refuses cache=True when it finds no writable cache location: compile anyway."""
+    real = ik_kernel.numba.njit
+
+    def njit(**kw):
+        if kw.get("cache"):
+            raise RuntimeError("cannot cache function 'f': no locator available for file 'x'")
+        return real(**kw)
+
+    monkeypatch.setattr(ik_kernel.numba, "njit", njit)
+
+    def add_one(x):
+        return x + 1.0
+
+    compiled = ik_kernel.jit(add_one)
+    assert compiled(1.0) == 2.0 and compiled.signatures  # a Numba dispatcher, compiled
