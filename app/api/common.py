@@ -20,7 +20,7 @@ from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
-from app.api.errors import MalformedBodyError
+from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError
 from app.kinematics.models import RobotModel
 from app.registry import Registry
 from app.settings import Settings
@@ -190,13 +190,17 @@ def parse_json(raw: bytes) -> Any:
 
     The standard library accepts NaN and ±Infinity (not JSON, but what many clients send);
     the request models then reject them with the field's name. Anything else that does not
-    decode is a 400 naming the body.
+    decode, including arrays and objects nested deeper than orjson's 1024 levels (where the
+    standard library would exceed the recursion limit), raises :class:`MalformedBodyError`
+    (a 400 naming the body).
     """
     try:
         return orjson.loads(raw)
     except orjson.JSONDecodeError:
         try:
             return json.loads(raw)
+        except RecursionError:  # nested deeper than the interpreter's recursion limit
+            raise MalformedBodyError(NESTED_TOO_DEEPLY) from None
         except (ValueError, UnicodeDecodeError) as exc:
             raise MalformedBodyError(f"body: malformed JSON ({exc})") from None
 

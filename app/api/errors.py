@@ -43,8 +43,25 @@ _TITLES = {
 }
 
 
+#: Detail of a JSON body nested too deeply to decode (every route, fast path or not).
+NESTED_TOO_DEEPLY = "body: malformed JSON (arrays and objects nested too deeply)"
+
+#: The detail of the ``HTTPException`` FastAPI raises when decoding a body fails with anything
+#: but a JSON syntax error (``RecursionError`` for deep nesting, ``UnicodeDecodeError``).
+_FASTAPI_BODY_ERROR = "There was an error parsing the body"
+
+
 class MalformedBodyError(Exception):
     """The request body is not JSON (HTTP 400); raised by routes that decode their own."""
+
+
+def _body_error_detail(cause: BaseException | None) -> str:
+    """The detail of a 400 for a body FastAPI could not decode, from the underlying error."""
+    if isinstance(cause, RecursionError):
+        return NESTED_TOO_DEEPLY
+    if isinstance(cause, UnicodeDecodeError):
+        return f"body: not UTF-8 text ({cause.reason})"
+    return f"body: malformed JSON ({cause})" if cause else "body: malformed JSON"
 
 
 class FieldError(BaseModel):
@@ -161,6 +178,14 @@ def install(app: FastAPI) -> None:
 
     @app.exception_handler(StarletteHTTPException)
     async def _http(request: Request, exc: StarletteHTTPException) -> Response:
+        if exc.status_code == 400 and exc.detail == _FASTAPI_BODY_ERROR:
+            return problem(
+                400,
+                _body_error_detail(exc.__cause__),
+                kind="malformed-json",
+                field="body",
+                instance=request.url.path,
+            )
         return problem(
             exc.status_code,
             str(exc.detail),

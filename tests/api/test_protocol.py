@@ -1,0 +1,78 @@
+"""HTTP protocol contract: malformed bodies, methods (405 ``Allow``, ``HEAD``), in-process.
+
+The live-server side (connections after a 500, SIGTERM mid-request) is in
+tests/test_live_protocol.py.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from fastapi.routing import iter_route_contexts
+from fastapi.testclient import TestClient
+
+from app.main import create_app
+from app.settings import Settings
+
+#: Any path parameter gets an existing catalog robot (or a harmless name): the body must be
+#: refused before the parameter matters.
+_PARAMS = {"robot_id": "ur5"}
+
+
+def _concrete(template: str) -> str:
+    return re.sub(r"\{(\w+)(:\w+)?\}", lambda m: _PARAMS.get(m.group(1), "x"), template)
+
+
+def _body_routes() -> list[tuple[str, str]]:
+    """(method, path) of every documented operation that takes a request body."""
+    app = create_app(Settings())
+    out = []
+    for rc in iter_route_contexts(app.routes):
+        if not getattr(rc, "include_in_schema", False):
+            continue
+        for method in sorted((rc.methods or set()) & {"POST", "PUT", "PATCH"}):
+            out.append((method, _concrete(rc.path)))
+    return out
+
+
+BODY_ROUTES = _body_routes()
+
+
+def test_every_body_style_is_covered() -> None:
+    """Both decoders are exercised: routes decoding their own body and FastAPI-decoded ones."""
+    paths = {p for _, p in BODY_ROUTES}
+    assert "/robots/ur5/fk/batch" in paths  # fast path: parse_json (orjson, then json)
+    assert "/robots/ur5/fk" in paths  # FastAPI: starlette json.loads + pydantic
+    assert "/robots/urdf" in paths and "/robots/dh" in paths  # uploads
+    assert len(BODY_ROUTES) >= 15
+
+
+def _deep(depth: int) -> list[bytes]:
+    nested = b"[" * depth + b"]" * depth
+    return [nested, b'{"q": ' + nested + b"}"]
+
+
+@pytest.mark.parametrize("depth", [10_000, 100_000])
+@pytest.mark.parametrize(("method", "path"), BODY_ROUTES)
+def test_deeply_nested_json_is_a_400_naming_the_body(
+    client: TestClient, method: str, path: str, depth: int
+) -> None:
+    for raw in _deep(depth):
+        resp = client.request(
+            method, path, content=raw, headers={"content-type": "application/json"}
+        )
+        assert resp.status_code == 400, (method, path, resp.status_code, resp.text[:300])
+        assert resp.headers["content-type"] == "application/problem+json"
+        body = resp.json()
+        assert body["field"] == "body", body
+        assert body["detail"].startswith("body: "), body
+
+
+@pytest.mark.parametrize(("method", "path"), BODY_ROUTES)
+def test_non_utf8_body_is_a_400_naming_the_body(client: TestClient, method: str, path: str) -> None:
+    resp = client.request(
+        method, path, content=b'{"q": "\xff\xfe"}', headers={"content-type": "application/json"}
+    )
+    assert resp.status_code == 400, (method, path, resp.status_code, resp.text[:300])
+    assert resp.json()["field"] == "body"
