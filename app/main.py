@@ -6,8 +6,10 @@ naming the variable (see :mod:`app.settings`).
 Middleware, outermost first (all pure ASGI, see docs/deployment.md):
 
 1. :class:`~app.observability.ObservabilityMiddleware` — request id, metrics, access log;
-2. CORS, only when ``DENAVIT_CORS_ORIGINS`` is set;
-3. :class:`~app.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``.
+2. :class:`~app.guard.ErrorGuardMiddleware` — 500 problem for a bug, 503 for a request cut
+   off by the shutdown; the connection stays usable;
+3. CORS, only when ``DENAVIT_CORS_ORIGINS`` is set;
+4. :class:`~app.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from starlette.middleware.cors import CORSMiddleware
 from app import api, openapi
 from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
+from app.guard import ErrorGuardMiddleware
 from app.kinematics import ik
 from app.observability import ObservabilityMiddleware, configure_logging
 from app.registry import Registry
@@ -94,6 +97,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             expose_headers=["X-Request-ID"],
             max_age=600,
         )
+    app.add_middleware(ErrorGuardMiddleware)
     app.add_middleware(ObservabilityMiddleware, access_log=settings.access_log)
     return app
 

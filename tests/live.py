@@ -24,11 +24,16 @@ def free_port() -> int:
 
 
 @contextlib.contextmanager
-def serve(data_dir: Path, *args: str, env: dict[str, str] | None = None) -> Iterator[str]:
-    """Run ``uvicorn app.main:app`` on a free loopback port; yields the base URL."""
+def serve(
+    data_dir: Path, *args: str, env: dict[str, str] | None = None, app: str = "app.main:app"
+) -> Iterator[str]:
+    """Run ``uvicorn app.main:app`` (or ``app``) on a free loopback port; yields the base URL.
+
+    ``app`` may name a test-only factory, with ``"--factory"`` among ``args``.
+    """
     port = free_port()
     full_env = {**os.environ, "DENAVIT_DATA_DIR": str(data_dir), **(env or {})}
-    cmd = [sys.executable, "-m", "uvicorn", "app.main:app", "--host", "127.0.0.1",
+    cmd = [sys.executable, "-m", "uvicorn", app, "--host", "127.0.0.1",
            "--port", str(port), "--no-access-log", *args]  # fmt: skip
     # The server logs one JSON line per request: into a file, as an unread pipe would fill up.
     log = tempfile.TemporaryFile()

@@ -76,3 +76,27 @@ def test_non_utf8_body_is_a_400_naming_the_body(client: TestClient, method: str,
     )
     assert resp.status_code == 400, (method, path, resp.status_code, resp.text[:300])
     assert resp.json()["field"] == "body"
+
+
+def test_an_unexpected_exception_is_a_logged_500_problem(
+    settings: Settings, caplog: pytest.LogCaptureFixture
+) -> None:
+    """Answered (with the request id) and logged with its traceback, not re-raised.
+
+    ``TestClient`` re-raises what the application lets escape: before, this test saw the
+    ``RuntimeError`` itself (the same escape made uvicorn drop the connection).
+    """
+    app = create_app(settings)
+
+    @app.get("/test/bug")
+    async def bug() -> None:
+        raise RuntimeError("a bug, on purpose")
+
+    with TestClient(app) as client:  # raise_server_exceptions=True
+        resp = client.get("/test/bug", headers={"x-request-id": "bug-1"})
+    assert resp.status_code == 500
+    assert resp.headers["content-type"] == "application/problem+json"
+    assert resp.headers["x-request-id"] == "bug-1"
+    assert resp.json()["detail"] == "internal error"
+    [record] = [r for r in caplog.records if r.exc_info and "/test/bug" in r.getMessage()]
+    assert isinstance(record.exc_info[1], RuntimeError)
