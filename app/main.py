@@ -9,7 +9,9 @@ Middleware, outermost first (all pure ASGI, see docs/deployment.md):
 2. :class:`~app.guard.ErrorGuardMiddleware` — 500 problem for a bug, 503 for a request cut
    off by the shutdown; the connection stays usable;
 3. CORS, only when ``DENAVIT_CORS_ORIGINS`` is set;
-4. :class:`~app.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``.
+4. :class:`~app.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``;
+5. :class:`~app.methods.MethodsMiddleware` — ``HEAD`` on ``GET`` routes, 405 with the exact
+   ``Allow`` of the path.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import ik
+from app.methods import MethodsMiddleware
 from app.observability import ObservabilityMiddleware, configure_logging
 from app.registry import Registry
 from app.settings import Settings, get_settings
@@ -87,6 +90,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(metrics.router)
     openapi.install(app)  # error responses documented as sent (problem+json)
     # add_middleware puts each new one outside the previous ones.
+    app.add_middleware(MethodsMiddleware)
     app.add_middleware(BodyLimitMiddleware, max_body_bytes=settings.max_body_bytes)
     if settings.cors_origins:
         app.add_middleware(

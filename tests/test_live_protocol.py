@@ -45,6 +45,10 @@ def test_a_500_leaves_the_keep_alive_connection_usable(tmp_path: Path) -> None:
                 ok = client.get("/robots/ur5")
                 assert ok.status_code == 200
                 assert _local_port(ok) == port, "the connection was not kept"
+            head = client.head("/robots/ur5")  # served by uvicorn: no body, same length
+            assert head.status_code == 200 and head.content == b""
+            assert head.headers["content-length"] == str(len(ok.content))
+            assert _local_port(head) == port
 
 
 def _in_flight(url: str) -> int:

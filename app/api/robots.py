@@ -355,22 +355,6 @@ async def upload_urdf_robot(
     return _created(await offload(_add_urdf, reg, upload))
 
 
-@router.api_route(
-    "/dh", methods=["GET", "PUT", "PATCH", "DELETE", "OPTIONS"], include_in_schema=False
-)
-@router.api_route(
-    "/urdf", methods=["GET", "PUT", "PATCH", "DELETE", "OPTIONS"], include_in_schema=False
-)
-def import_routes_other_methods(request: Request) -> Response:
-    """405 for /robots/dh and /robots/urdf other than POST ("dh" and "urdf" are no robot ids)."""
-    return problem(
-        405,
-        f"method {request.method} is not allowed here; use POST",
-        instance=request.url.path,
-        headers={"Allow": "POST"},
-    )
-
-
 @router.delete(
     "/{robot_id}",
     operation_id="delete_robot",
@@ -416,19 +400,6 @@ def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) ->
     Runs in the thread pool: the first request for a robot parses its URDF.
     """
     return ORJSONResponse(robot_detail(reg.get(robot_id)))
-
-
-@router.api_route(
-    "/{robot_id}", methods=["POST", "PUT", "PATCH", "OPTIONS"], include_in_schema=False
-)
-def robot_other_methods(request: Request) -> Response:
-    """405 listing every method of /robots/{robot_id} (GET and DELETE are separate routes)."""
-    return problem(
-        405,
-        f"method {request.method} is not allowed here; use GET or DELETE",
-        instance=request.url.path,
-        headers={"Allow": "GET, HEAD, DELETE"},
-    )
 
 
 @router.get(

@@ -100,3 +100,59 @@ def test_an_unexpected_exception_is_a_logged_500_problem(
     assert resp.json()["detail"] == "internal error"
     [record] = [r for r in caplog.records if r.exc_info and "/test/bug" in r.getMessage()]
     assert isinstance(record.exc_info[1], RuntimeError)
+
+
+# ------------------------------------------------------------------------ methods, Allow, HEAD
+_ALL_METHODS = ("GET", "HEAD", "POST", "PUT", "PATCH", "DELETE", "OPTIONS")
+
+
+def _methods_by_path() -> dict[str, set[str]]:
+    """Path template → the methods its routes declare, plus HEAD wherever GET is."""
+    app = create_app(Settings())
+    out: dict[str, set[str]] = {}
+    for rc in iter_route_contexts(app.routes):
+        if rc.methods is not None:
+            out.setdefault(rc.path, set()).update(rc.methods)
+    for methods in out.values():
+        if "GET" in methods:
+            methods.add("HEAD")
+    return out
+
+
+METHODS_BY_PATH = _methods_by_path()
+
+
+def test_reserved_paths_are_not_robot_ids() -> None:
+    assert METHODS_BY_PATH["/robots/dh"] == METHODS_BY_PATH["/robots/urdf"] == {"POST"}
+    assert METHODS_BY_PATH["/robots/{robot_id}"] == {"GET", "HEAD", "DELETE"}
+    assert METHODS_BY_PATH["/scenes"] == {"GET", "HEAD", "POST"}
+
+
+@pytest.mark.parametrize("template", sorted(METHODS_BY_PATH))
+def test_every_405_allows_exactly_the_methods_of_its_path(
+    client: TestClient, template: str
+) -> None:
+    expected = METHODS_BY_PATH[template]
+    path = _concrete(template)
+    for method in sorted(set(_ALL_METHODS) - expected):
+        resp = client.request(method, path)
+        assert resp.status_code == 405, (method, path, resp.status_code)
+        assert resp.headers["content-type"] == "application/problem+json"
+        allow = {m.strip() for m in resp.headers["allow"].split(",")}
+        assert allow == expected, (method, path)
+
+
+@pytest.mark.parametrize(
+    "template", sorted(t for t, methods in METHODS_BY_PATH.items() if "GET" in methods)
+)
+def test_head_answers_like_get_without_a_body(client: TestClient, template: str) -> None:
+    path = _concrete(template)
+    get = client.get(path, follow_redirects=False)
+    head = client.head(path, follow_redirects=False)
+    assert head.status_code == get.status_code, path
+    assert head.content == b"", path
+    assert head.headers.get("content-type") == get.headers.get("content-type"), path
+    assert head.headers.get("content-length") == get.headers.get("content-length") or (
+        template == "/metrics"  # the scrape counts the requests before it: lengths differ
+    ), path
+    assert get.headers.get("content-length") == str(len(get.content)), path
