@@ -14,7 +14,7 @@ A pure ASGI middleware with the application's route table, built on the first re
   first route it tried: ``/scenes`` advertised ``POST`` but not ``GET``.)
 - Paths no route matches pass through untouched (404, trailing-slash redirects).
 
-Cost per request: one match of one compiled regular expression.
+Cost per request: a dict lookup for a path seen before, else one regex match (~2.5 µs).
 """
 
 from __future__ import annotations
@@ -79,13 +79,28 @@ class RouteTable:
         self._names = {f"r{i}": p for i, p in enumerate(self.resources)}
         alternatives = (f"(?P<{n}>{_pattern(p)})" for n, p in self._names.items())
         self._regex = re.compile(r"\A(?:" + "|".join(alternatives) + r")\Z")
+        self._cache: dict[str, Resource | None] = {}
 
     def match(self, path: str) -> Resource | None:
-        """The resource of ``path`` (first matching template), or ``None``."""
+        """The resource of ``path`` (first matching template), or ``None``.
+
+        Answers for paths up to 256 characters are remembered (up to 4096 paths, then the
+        memory starts afresh): a repeated path costs a dict lookup (~0.1 µs) instead of the
+        regex (~2.5 µs).
+        """
+        try:
+            return self._cache[path]
+        except KeyError:
+            pass
         m = self._regex.match(path)
-        if m is None or m.lastgroup is None:
-            return None
-        return self.resources[self._names[m.lastgroup]]
+        found = (
+            None if m is None or m.lastgroup is None else self.resources[self._names[m.lastgroup]]
+        )
+        if len(path) <= 256:
+            if len(self._cache) >= 4096:
+                self._cache.clear()
+            self._cache[path] = found
+        return found
 
 
 class MethodsMiddleware:
