@@ -36,6 +36,7 @@ from app.kinematics.errors import (
     ConflictError,
     ForbiddenError,
     InvalidInputError,
+    KinematicsError,
     UnknownNameError,
 )
 from app.kinematics.models import RobotModel, RobotSummary
@@ -480,7 +481,15 @@ class Registry:
             if exc.field == "robot_id":
                 raise
             reason: BaseException = exc
-        except (OSError, ValueError, RuntimeError, IndexError, KeyError, TypeError) as exc:
+        except (
+            KinematicsError,
+            OSError,
+            ValueError,
+            RuntimeError,
+            IndexError,
+            KeyError,
+            TypeError,
+        ) as exc:
             reason = exc
         log.error("stored robot %r cannot be loaded: %r", stored.id, reason)
         raise ConflictError(

@@ -26,7 +26,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
-from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
+from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
 _FRAME_PRIORITY = {
@@ -86,10 +86,6 @@ def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:
     return tuple(float(v) for v in text.split())
 
 
-#: No bounds: the documents read here were checked when they were uploaded (or are built in).
-_TRUSTED = XmlLimits(10**9, 10**9, 10**9, 10**9)
-
-
 def _model_axis(jm: Any) -> tuple[float, float, float] | None:
     """The axis Pinocchio's joint model moves along (what FK uses), ``None`` if not 1-DoF.
 
@@ -112,7 +108,7 @@ def parse_urdf_joints(urdf_text: str) -> dict[str, dict[str, Any]]:
     The XML is read with literal (namespace-unaware) names, as Pinocchio's URDF parser
     reads it (:func:`app.kinematics.xmldoc.parse_literal_xml`).
     """
-    root = parse_literal_xml(urdf_text, "urdf", _TRUSTED)
+    root = parse_literal_xml(urdf_text, "urdf", TRUSTED)
     joints: dict[str, dict[str, Any]] = {}
     for j in root.iter("joint"):
         name = j.get("name")
