@@ -599,8 +599,9 @@ class Registry:
     ) -> RobotModel:
         """Add a robot from client-supplied URDF (and SRDF) text, checked first.
 
-        The XML is parsed with defusedxml (no DTD, entities or external references) and
-        checked (:func:`check_urdf_document`) before Pinocchio sees it.
+        The XML is parsed with literal names as Pinocchio reads it, without DTD, entities or
+        external references and within :attr:`limits`, and checked
+        (:func:`check_urdf_document`) before Pinocchio sees it.
         """
         store = self._writable(robot_id, "name")
         check_text(description, "description")

@@ -344,10 +344,16 @@ async def upload_urdf_robot(
 ) -> Response:
     """Add a robot from URDF text (and optional SRDF); its id is ``name``.
 
-    The XML is parsed with defusedxml first: DTDs and entity declarations are refused, mesh
-    filenames must be ``package://<package>/<path>`` URIs without ``..``, and the links
-    must form one tree with at least one actuated joint; then Pinocchio builds the model.
-    201 with the robot's description; 409 if the id is taken; 413 past the upload limit.
+    The XML is checked first, read as Pinocchio reads it (names taken literally, namespaces
+    ignored): DTDs and entity declarations are refused, mesh filenames must be exactly
+    ``package://<package>/<path>`` URIs without ``..`` or whitespace, joint axes need a norm
+    of at least 1e-6, lengths and angles at most 1e6, and the links must form one tree with
+    at least one actuated joint; then Pinocchio builds the model. The work a document may
+    cause is bounded (422 naming the limit): XML elements, attributes (in total and per
+    element), nesting depth, joints and movable joints (``DENAVIT_MAX_XML_*``,
+    ``DENAVIT_MAX_URDF_JOINTS``, ``DENAVIT_MAX_ROBOT_DOF``). Text must be valid Unicode
+    (no lone surrogates). 201 with the robot's description; 409 if the id is taken; 413
+    past the upload limit.
     """
     body = await _read_upload(request)
     if isinstance(body, Response):
