@@ -13,8 +13,10 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
+from app.kinematics.errors import InvalidInputError
 from app.main import create_app
 from app.registry import erd_share_dir
+from app.scenes import SceneStore
 from app.settings import Settings
 from tests.live import serve
 
@@ -105,20 +107,33 @@ def test_dh_import_with_a_lone_surrogate_is_422_naming_the_field(client, fmt) ->
     assert user_ids(client) == []
 
 
-def test_scene_with_a_lone_surrogate_is_422_naming_the_field(client) -> None:
+def test_scene_with_a_lone_surrogate_is_422_naming_the_field(client, tmp_path) -> None:
     box = '{"name": "b%s", "shape": "box", "size": [1, 1, 1]}'
     text = f'{{"name": "s1", "description": "d{SURROGATE}", "obstacles": [{box % ""}]}}'
     problem(post_raw(client, "/scenes", text), 422, "description")
     text = f'{{"name": "s1", "obstacles": [{box % SURROGATE}]}}'
     problem(post_raw(client, "/scenes", text), 422, "obstacles.0.name")
     assert client.get("/scenes").json()["scenes"] == []
+    # The store refuses it too, whoever calls it (it used to fail writing the file).
+    store = SceneStore(tmp_path / "scenes")
+    box_doc = {"name": "b", "shape": "box", "size": [1.0, 1.0, 1.0]}
+    with pytest.raises(InvalidInputError) as err:
+        store.create("s2", [box_doc], "d\ud800")
+    assert err.value.field == "description"
+    with pytest.raises(InvalidInputError) as err:
+        store.create("s2", [{**box_doc, "name": "b\ud800"}])
+    assert err.value.field == "obstacles.0.name"
+    assert store.names() == []
 
 
-def test_echoed_surrogate_is_a_4xx_not_a_500(client) -> None:
-    """A surrogate in a name the service would echo (unknown frame) is refused cleanly."""
-    resp = post_raw(client, "/robots/panda/fk", f'{{"frames": ["x{SURROGATE}"]}}')
-    assert 400 <= resp.status_code < 500, resp.text
-    resp.json()
+def test_echoed_surrogate_is_a_422_not_a_500(client) -> None:
+    """A surrogate in a name the service echoes (an unknown joint, as a map key)."""
+    text = f'{{"joint_positions": {{"x{SURROGATE}": 1.0}}}}'
+    resp = post_raw(client, "/robots/panda/fk", text)
+    assert resp.status_code in (404, 422), resp.text
+    body = problem(resp, resp.status_code)
+    assert body["field"].startswith("joint_positions")
+    resp.content.decode("utf-8")  # strict: the echo is valid UTF-8
 
 
 def _store_robot(settings: Settings, rid: str) -> Path:
@@ -189,16 +204,25 @@ def test_dh_lengths_and_angles_are_bounded(client, row, units, field) -> None:
     doc = {"name": "huge", "convention": "standard", "units": {"length": units}, "joints": [joint]}
     problem(client.post("/robots/dh", json=doc), 422, field)
     assert user_ids(client) == []
-
-
-def test_dh_values_at_the_bound_are_accepted(client) -> None:
-    joint = {"a": 1e6, "alpha": 0.0, "d": 0.0, "theta": 0.0}
-    doc = {"name": "edge", "convention": "standard", "joints": [joint]}
+    # At the bound itself the table is accepted.
+    edge = {"a": 1e6, "alpha": 0.0, "d": -1e6, "theta": 1e6}
+    doc = {"name": "edge", "convention": "standard", "joints": [edge]}
     assert client.post("/robots/dh", json=doc).status_code == 201
 
 
 # ------------------------------------------------------------------ 3. namespaces and URIs
 PASSWD_MESH = '<mesh filename="/etc/passwd"/>'
+
+
+def hidden_joint(joint_attrs: str) -> str:
+    """A second joint (and its child link) in a default namespace, invisible to a check that
+    reads tags namespace-aware, plain to urdfdom."""
+    return urdf_doc().replace(
+        "</robot>",
+        '<link xmlns="urn:x" name="l2"/>'
+        '<joint xmlns="urn:x" name="j2" type="revolute"><parent link="l1"/><child link="l2"/>'
+        f"{joint_attrs}</joint></robot>",
+    )
 
 
 @pytest.mark.parametrize(
@@ -214,23 +238,14 @@ PASSWD_MESH = '<mesh filename="/etc/passwd"/>'
         urdf_doc(axis="0 0 0").replace("<axis ", '<axis xmlns="urn:x" '),
         urdf_doc(limit='lower="2" upper="1"').replace("<limit ", '<limit xmlns="urn:x" '),
         urdf_doc(axis="0 0 1e308").replace("<axis ", '<axis xmlns="urn:x" '),
+        hidden_joint('<axis xyz="0 0 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/>'),
+        hidden_joint('<axis xyz="0 0 1"/><limit lower="2" upper="1" effort="1" velocity="1"/>'),
     ],
 )
 def test_namespace_tricks_do_not_bypass_the_checks(client, doc) -> None:
     body = problem(client.post("/robots/urdf", json={"name": "ns", "urdf": doc}), 422, "urdf")
     assert "passwd" not in body["detail"] or "refused" in body["detail"]
     assert user_ids(client) == []
-
-
-def test_prefixed_elements_are_what_pinocchio_ignores(client) -> None:
-    """``<x:mesh>`` is no mesh to urdfdom either: whatever happens, /etc/passwd is not read."""
-    doc = urdf_doc(geometry='<x:mesh xmlns:x="urn:x" filename="/etc/passwd"/>')
-    resp = client.post("/robots/urdf", json={"name": "prefixed", "urdf": doc})
-    assert resp.status_code in (201, 422), resp.text
-    if resp.status_code == 201:
-        coll = client.post("/robots/prefixed/collisions", json={"q": [0.0]})
-        assert coll.status_code in (200, 422), coll.text
-        assert "passwd" not in coll.text and "root:" not in coll.text
 
 
 @pytest.mark.parametrize(
@@ -255,13 +270,6 @@ def test_mesh_uris_pinocchio_resolves_differently_are_refused(client, uri) -> No
     assert user_ids(client) == []
 
 
-def test_plain_package_uri_is_accepted_and_loads(client) -> None:
-    uri = "package://example-robot-data/robots/ur_description/meshes/ur5/collision/base.stl"
-    doc = urdf_doc(geometry=f'<mesh filename="{uri}"/>')
-    assert client.post("/robots/urdf", json={"name": "ok", "urdf": doc}).status_code == 201
-    assert client.post("/robots/ok/collisions", json={"q": [0.0]}).status_code == 200
-
-
 def test_mesh_loading_errors_leak_no_host_or_source_path(client) -> None:
     """A file inside the package roots that is no mesh: the answer names the URI only."""
     uri = "package://example-robot-data/robots/ur_description/urdf/ur5_robot.urdf"
@@ -272,6 +280,19 @@ def test_mesh_loading_errors_leak_no_host_or_source_path(client) -> None:
     assert uri in detail
     for leak in (str(erd_share_dir()), ".cpp", "From file", "line:", "/project/"):
         assert leak not in detail, detail
+    # A plain package:// mesh is accepted and loads.
+    uri = "package://example-robot-data/robots/ur_description/meshes/ur5/collision/base.stl"
+    doc = urdf_doc(geometry=f'<mesh filename="{uri}"/>')
+    assert client.post("/robots/urdf", json={"name": "ok", "urdf": doc}).status_code == 201
+    assert client.post("/robots/ok/collisions", json={"q": [0.0]}).status_code == 200
+    # <x:mesh> is no mesh to urdfdom either: whatever happens, /etc/passwd is not read.
+    doc = urdf_doc(geometry='<x:mesh xmlns:x="urn:x" filename="/etc/passwd"/>')
+    resp = client.post("/robots/urdf", json={"name": "prefixed", "urdf": doc})
+    assert resp.status_code in (201, 422), resp.text
+    if resp.status_code == 201:
+        coll = client.post("/robots/prefixed/collisions", json={"q": [0.0]})
+        assert coll.status_code in (200, 422), coll.text
+        assert "passwd" not in coll.text and "root:" not in coll.text
 
 
 # ------------------------------------------------------------------ 4. axes
