@@ -404,6 +404,8 @@ def _load_json(text: str) -> Any:
 
 
 def _describe(value: Any) -> str:
+    if isinstance(value, HugeInt):
+        return f"an integer literal of {len(value)} digits"
     text = repr(value)
     if len(text) > 40:
         text = text[:37] + "..."
