@@ -461,11 +461,24 @@ class Registry:
         return robot
 
     def _build_stored(self, stored: StoredRobot) -> RobotModel:
-        """The model of a stored robot; a record damaged on disk is a 409 naming it."""
+        """The model of a stored robot; a record that cannot be served is a 409 naming it.
+
+        The stored URDF (and SRDF) pass the upload checks and limits again before Pinocchio
+        reads them: a record written before a check existed (a namespace-hidden mesh path,
+        thousands of attributes, hundreds of joints) or damaged on disk is refused, not
+        served.
+        """
+        why = "its record is damaged"
         try:
             urdf = stored.read_text(URDF_FILE)
             if urdf is None:  # deleted by another process since the listing
                 raise UnknownNameError("robot", stored.id, "robot_id", self.ids())
+            srdf = stored.read_text(SRDF_FILE)
+            root = parse_untrusted_xml(urdf, "urdf", self.limits.xml)
+            check_urdf_document(root, "urdf", self.limits)
+            if srdf is not None:
+                links = {link.get("name", "") for link in root.findall("link")}
+                check_srdf_document(srdf, links, "srdf", self.limits.xml)
             meta = stored.meta
             return RobotModel(
                 stored.id,
@@ -473,7 +486,7 @@ class Registry:
                 name=meta.get("name") or stored.id,
                 source=meta.get("source") or "upload",
                 package_dirs=[str(erd_share_dir())],
-                srdf_text=stored.read_text(SRDF_FILE),
+                srdf_text=srdf,
                 ee_frame=meta.get("ee_frame"),
                 description=meta.get("description") or "",
             )
@@ -481,6 +494,9 @@ class Registry:
             if exc.field == "robot_id":
                 raise
             reason: BaseException = exc
+        except InvalidInputError as exc:  # our own checks: the message holds no host detail
+            reason = exc
+            why = f"it fails today's checks: {exc.field}: {exc.message}"
         except (
             KinematicsError,
             OSError,
@@ -493,7 +509,7 @@ class Registry:
             reason = exc
         log.error("stored robot %r cannot be loaded: %r", stored.id, reason)
         raise ConflictError(
-            f"robot {stored.id!r} is stored but cannot be loaded (its record is damaged); "
+            f"robot {stored.id!r} is stored but cannot be served ({why}); "
             "delete it and add it again",
             "robot_id",
         )

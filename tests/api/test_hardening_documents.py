@@ -387,3 +387,21 @@ def test_killer_document_gets_a_quick_4xx_on_a_live_two_worker_server(tmp_path) 
         assert ok.status_code == 201, ok.text
         listing = http.get(url + "/robots").json()["robots"]
         assert [r["id"] for r in listing if r["source"] == "upload"] == ["fine"]
+
+
+def test_records_stored_before_the_checks_are_not_served(settings) -> None:
+    """A URDF stored before this fix with a namespace-hidden host path, or too many joints:
+    re-checked when first loaded, a 409 naming the robot, and no host file is read."""
+    hidden = _store_robot(settings, "hidden")
+    doc = urdf_doc(geometry='<mesh xmlns="urn:x" filename="/etc/passwd"/>')
+    (hidden / "robot.urdf").write_text(doc)
+    big = _store_robot(settings, "big")
+    (big / "robot.urdf").write_text(chain(200))
+    with TestClient(create_app(settings), raise_server_exceptions=False) as c:
+        for rid, reason in (("hidden", "refused"), ("big", "DENAVIT_MAX_ROBOT_DOF")):
+            body = problem(c.get(f"/robots/{rid}"), 409, "robot_id")
+            assert reason in body["detail"], body
+            coll = c.post(f"/robots/{rid}/collisions", json={"q": [0.0]})
+            assert coll.status_code == 409, coll.text
+            assert "root:" not in coll.text
+        assert c.delete("/robots/hidden").status_code == 204
