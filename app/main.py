@@ -29,9 +29,10 @@ from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import ik
+from app.kinematics.xmldoc import XmlLimits
 from app.methods import MethodsMiddleware
 from app.observability import ObservabilityMiddleware, configure_logging
-from app.registry import Registry
+from app.registry import Registry, UrdfLimits
 from app.settings import Settings, get_settings
 from app.store import remove_stale_temporaries
 
@@ -83,7 +84,17 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     settings = settings or get_settings()
     app = FastAPI(title="Denavit", version="0.1.0", description=DESCRIPTION, lifespan=lifespan)
     app.state.settings = settings
-    app.state.registry = Registry(settings.data_dir)
+    limits = UrdfLimits(
+        xml=XmlLimits(
+            max_elements=settings.max_xml_elements,
+            max_attributes=settings.max_xml_attributes,
+            max_attributes_per_element=settings.max_xml_attributes_per_element,
+            max_depth=settings.max_xml_depth,
+        ),
+        max_joints=settings.max_urdf_joints,
+        max_dof=settings.max_robot_dof,
+    )
+    app.state.registry = Registry(settings.data_dir, limits)
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)

@@ -22,28 +22,25 @@ from __future__ import annotations
 
 import importlib.metadata
 import logging
-import math
 import threading
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Any, Literal
-from urllib.parse import urlsplit
-from xml.etree.ElementTree import Element, ParseError
 
 import yaml
-from defusedxml import DefusedXmlException
-from defusedxml import ElementTree as SafeET
 
 import robots
 from app.kinematics.errors import (
     ConflictError,
     ForbiddenError,
     InvalidInputError,
+    KinematicsError,
     UnknownNameError,
 )
 from app.kinematics.models import RobotModel, RobotSummary
+from app.kinematics.text import check_text
 from app.store import (
     SRDF_FILE,
     TABLE_FILE,
@@ -52,7 +49,26 @@ from app.store import (
     StoredRobot,
     check_robot_id,
 )
+from app.urdf_checks import (
+    URDF_JOINT_TYPES,
+    UrdfLimits,
+    check_resource_uri,
+    check_srdf_document,
+    check_urdf_document,
+    parse_untrusted_xml,
+)
 from dh2urdf import DHError, DHTable, to_urdf
+
+__all__ = [
+    "URDF_JOINT_TYPES",
+    "Registry",
+    "UrdfLimits",
+    "check_resource_uri",
+    "check_srdf_document",
+    "check_urdf_document",
+    "parse_dh_document",
+    "parse_untrusted_xml",
+]
 
 log = logging.getLogger("denavit.registry")
 
@@ -68,30 +84,6 @@ MAX_DH_DOCUMENT_BYTES = 256 * 1024
 MAX_DOCUMENT_DEPTH = 16
 #: Most YAML parse events a DH document may have (64 rows of 10 fields need ~1,400).
 MAX_YAML_EVENTS = 20_000
-#: Most joints (of any type) a user-supplied URDF may have.
-MAX_URDF_JOINTS = 512
-#: Joint types a URDF upload may use (the wire has one value per actuated joint).
-URDF_JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed")
-_NUMERIC_ATTRIBUTES = {
-    "origin": ("xyz", "rpy"),
-    "axis": ("xyz",),
-    "limit": ("lower", "upper", "effort", "velocity"),
-    "mimic": ("multiplier", "offset"),
-    "mass": ("value",),
-    "inertia": ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"),
-    "box": ("size",),
-    "cylinder": ("radius", "length"),
-    "sphere": ("radius",),
-    "capsule": ("radius", "length"),
-    "mesh": ("scale",),
-    "dynamics": ("damping", "friction"),
-    "safety_controller": ("soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"),
-}
-
-#: Attributes holding three numbers (the others hold one).
-_VECTOR_ATTRIBUTES = frozenset(
-    {("origin", "xyz"), ("origin", "rpy"), ("axis", "xyz"), ("box", "size"), ("mesh", "scale")}
-)
 
 
 @lru_cache
@@ -305,203 +297,6 @@ def table_yaml(table: DHTable) -> bytes:
 
 
 # ---------------------------------------------------------------------- URDF uploads
-def parse_untrusted_xml(text: str, field: str) -> Element:
-    """Parse XML from a client with defusedxml: no DTD, no entities, no external references.
-
-    Raises :class:`InvalidInputError` naming ``field`` for anything that is not plain,
-    well-formed XML.
-    """
-    if "\x00" in text:
-        raise InvalidInputError("XML must not contain NUL characters", field)
-    try:
-        return SafeET.fromstring(text, forbid_dtd=True)
-    except DefusedXmlException as exc:
-        raise InvalidInputError(
-            f"DTDs and entity declarations are not accepted ({type(exc).__name__})",
-            field,
-        ) from None
-    except ParseError as exc:
-        raise InvalidInputError(f"not well-formed XML ({exc})", field) from None
-    except (ValueError, RecursionError) as exc:
-        raise InvalidInputError(f"not well-formed XML ({exc})", field) from None
-
-
-def check_resource_uri(uri: str) -> str | None:
-    """Why a mesh/texture ``filename`` is refused, or ``None`` when it is allowed.
-
-    Allowed: ``package://<package>/<path>`` with plain segments (no ``..``, ``.``, empty
-    segments, backslashes or percent escapes); such URIs resolve inside the package
-    directories the service was given and nowhere else. Refused: absolute paths, relative
-    paths, ``file://`` and every other scheme.
-    """
-    if not uri:
-        return "empty filename"
-    if any(c in uri for c in "\\%\x00") or any(ord(c) < 32 for c in uri):
-        return "backslashes, percent escapes and control characters are not allowed"
-    parts = urlsplit(uri)
-    if parts.scheme != "package":
-        if parts.scheme:
-            return f"scheme {parts.scheme}:// is not allowed (use package://<package>/<path>)"
-        return "plain paths are not allowed (use package://<package>/<path>)"
-    if parts.query or parts.fragment or "@" in parts.netloc or ":" in parts.netloc:
-        return "package URIs take no query, fragment, user or port"
-    segments = [parts.netloc, *parts.path.split("/")[1:]]
-    if len(segments) < 2 or any(s in ("", ".", "..") for s in segments):
-        return "package URIs need a package name and a path without '..', '.' or empty segments"
-    return None
-
-
-def _check_numbers(root: Element, field: str) -> None:
-    for element in root.iter():
-        names = _NUMERIC_ATTRIBUTES.get(element.tag, ())
-        for attr in names:
-            raw = element.get(attr)
-            if raw is None:
-                continue
-            try:
-                values = [float(v) for v in raw.split()]
-            except ValueError:
-                raise InvalidInputError(
-                    f"<{element.tag} {attr}={raw[:40]!r}>: not a list of numbers", field
-                ) from None
-            if not all(math.isfinite(v) for v in values):
-                raise InvalidInputError(
-                    f"<{element.tag} {attr}={raw[:40]!r}>: numbers must be finite", field
-                )
-            count = 3 if (element.tag, attr) in _VECTOR_ATTRIBUTES else 1
-            if len(values) != count:
-                raise InvalidInputError(
-                    f"<{element.tag} {attr}={raw[:40]!r}>: expected {count} number"
-                    f"{'s' if count > 1 else ''}, got {len(values)}",
-                    field,
-                )
-
-
-def check_urdf_document(root: Element, field: str = "urdf") -> None:
-    """Structural checks of an uploaded URDF, with messages that name the culprit.
-
-    Pinocchio's own parser only says "not a valid URDF model"; these checks say why: the
-    root element, link and joint names, joint types and limits, the tree structure
-    (one root, one parent per link, no cycle), finite numbers, non-zero axes, at least one
-    actuated joint, and safe ``<mesh>``/``<texture>`` ``filename`` URIs (see
-    :func:`check_resource_uri`; other ``filename`` attributes, e.g. Gazebo plugins, are
-    never opened).
-    """
-    if root.tag != "robot":
-        raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
-    for element in root.iter():
-        uri = element.get("filename") if element.tag in ("mesh", "texture") else None
-        if uri is not None:
-            reason = check_resource_uri(uri)
-            if reason:
-                raise InvalidInputError(
-                    f"<{element.tag} filename={uri[:80]!r}> refused: {reason}", field
-                )
-    _check_numbers(root, field)
-
-    links: set[str] = set()
-    for link in root.findall("link"):
-        name = link.get("name")
-        if not name:
-            raise InvalidInputError("a <link> has no name", field)
-        if name in links:
-            raise InvalidInputError(f"link {name!r} is defined twice", field)
-        links.add(name)
-    if not links:
-        raise InvalidInputError("the URDF has no <link>", field)
-
-    joints = root.findall("joint")
-    if len(joints) > MAX_URDF_JOINTS:
-        raise InvalidInputError(f"at most {MAX_URDF_JOINTS} joints, got {len(joints)}", field)
-    names: set[str] = set()
-    parent_of: dict[str, str] = {}
-    actuated = 0
-    for joint in joints:
-        name = joint.get("name")
-        if not name:
-            raise InvalidInputError("a <joint> has no name", field)
-        if name in names:
-            raise InvalidInputError(f"joint {name!r} is defined twice", field)
-        names.add(name)
-        jtype = joint.get("type")
-        if jtype not in URDF_JOINT_TYPES:
-            raise InvalidInputError(
-                f"joint {name!r}: type {jtype!r} is not supported "
-                f"(use {', '.join(URDF_JOINT_TYPES)})",
-                field,
-            )
-        ends = {}
-        for end in ("parent", "child"):
-            el = joint.find(end)
-            link = el.get("link") if el is not None else None
-            if not link:
-                raise InvalidInputError(f"joint {name!r} has no <{end} link=...>", field)
-            if link not in links:
-                raise InvalidInputError(
-                    f"joint {name!r}: {end} link {link!r} is not defined", field
-                )
-            ends[end] = link
-        if ends["child"] in parent_of:
-            raise InvalidInputError(
-                f"link {ends['child']!r} has two parent joints "
-                f"({parent_of[ends['child']]!r} and {name!r})",
-                field,
-            )
-        parent_of[ends["child"]] = name
-        axis = joint.find("axis")
-        if jtype != "fixed" and axis is not None and axis.get("xyz") is not None:
-            if all(float(v) == 0.0 for v in axis.get("xyz", "").split()):
-                raise InvalidInputError(f"joint {name!r}: the axis is the zero vector", field)
-        if jtype in ("revolute", "prismatic"):
-            limit = joint.find("limit")
-            if limit is None:
-                raise InvalidInputError(f"joint {name!r}: a {jtype} joint needs <limit>", field)
-            lower = float(limit.get("lower", 0.0))
-            upper = float(limit.get("upper", 0.0))
-            if lower > upper:
-                raise InvalidInputError(
-                    f"joint {name!r}: <limit> lower ({lower!r}) > upper ({upper!r})", field
-                )
-        if jtype != "fixed" and joint.find("mimic") is None:
-            actuated += 1
-
-    roots = sorted(links - set(parent_of))
-    if len(roots) != 1:
-        what = f"{len(roots)} root links ({', '.join(map(repr, roots[:5]))})" if roots else "none"
-        raise InvalidInputError(f"the links must form one tree with one root; found {what}", field)
-    child_of = {}
-    for joint in joints:
-        child_of.setdefault(joint.find("parent").get("link"), []).append(
-            joint.find("child").get("link")
-        )
-    seen, stack = {roots[0]}, [roots[0]]
-    while stack:
-        for child in child_of.get(stack.pop(), ()):
-            if child not in seen:
-                seen.add(child)
-                stack.append(child)
-    if len(seen) != len(links):
-        raise InvalidInputError("the joints form a cycle", field)
-    if actuated == 0:
-        raise InvalidInputError(
-            "the URDF has no actuated joint (revolute, continuous or prismatic)", field
-        )
-
-
-def check_srdf_document(text: str, links: set[str], field: str = "srdf") -> None:
-    """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs."""
-    root = parse_untrusted_xml(text, field)
-    if root.tag != "robot":
-        raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
-    for pair in root.iter("disable_collisions"):
-        for attr in ("link1", "link2"):
-            link = pair.get(attr)
-            if link not in links:
-                raise InvalidInputError(
-                    f"<disable_collisions {attr}={link!r}>: no such link in the URDF", field
-                )
-
-
 def build_checked_model(
     robot_id: str,
     urdf: str,
@@ -546,12 +341,21 @@ class Registry:
         The data directory (``DENAVIT_DATA_DIR``); user-added robots live in
         ``<data_dir>/robots``. ``None``: built-in robots only (adding robots is refused).
         Creating a registry cleans what a crash may have left in the robots directory.
+    limits
+        Bounds on the work an uploaded URDF may cause (``DENAVIT_MAX_XML_*``,
+        ``DENAVIT_MAX_URDF_JOINTS``, ``DENAVIT_MAX_ROBOT_DOF``); default :class:`UrdfLimits`.
+
+    A stored robot that cannot be read back (a record damaged on disk) is left out of the
+    listing or answered with a 409 naming it, never a 500.
 
     Thread-safe: models are built under a lock; a built model is immutable apart from its
     per-thread Data.
     """
 
-    def __init__(self, data_dir: Path | str | None = None) -> None:
+    def __init__(
+        self, data_dir: Path | str | None = None, limits: UrdfLimits | None = None
+    ) -> None:
+        self.limits = limits or UrdfLimits()
         self.catalog = load_catalog()
         self.dh_builtin = load_dh_builtins(exclude=self.catalog)
         self.store = RobotStore(Path(data_dir) / "robots") if data_dir is not None else None
@@ -600,14 +404,14 @@ class Registry:
         out = [e.summary() for e in self.catalog.values()]
         out += [e.summary() for e in self.dh_builtin.values()]
         for rid, stored in self._refresh().items():
-            meta = stored.meta
+            meta = stored.meta  # validated by RobotStore.load: strings are valid text
             out.append(
                 RobotSummary(
                     rid,
-                    str(meta.get("name") or rid),
-                    str(meta.get("source") or "upload"),
-                    int(meta.get("joints") or 0),
-                    str(meta.get("description") or ""),
+                    meta.get("name") or rid,
+                    meta.get("source") or "upload",
+                    meta.get("joints") or 0,
+                    meta.get("description") or "",
                 )
             )
         return out
@@ -652,22 +456,63 @@ class Registry:
             cached = self._user_models.get(robot_id)
             if cached is not None and cached[0] == stored.revision:
                 return cached[1]
-            urdf = stored.read_text(URDF_FILE)
-            if urdf is None:  # deleted by another process since the listing
-                raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
-            meta = stored.meta
-            robot = RobotModel(
-                robot_id,
-                urdf,
-                name=str(meta.get("name") or robot_id),
-                source=str(meta.get("source") or "upload"),
-                package_dirs=[str(erd_share_dir())],
-                srdf_text=stored.read_text(SRDF_FILE),
-                ee_frame=meta.get("ee_frame"),
-                description=str(meta.get("description") or ""),
-            )
+            robot = self._build_stored(stored)
             self._user_models = {**self._user_models, robot_id: (stored.revision, robot)}
         return robot
+
+    def _build_stored(self, stored: StoredRobot) -> RobotModel:
+        """The model of a stored robot; a record that cannot be served is a 409 naming it.
+
+        The stored URDF (and SRDF) pass the upload checks and limits again before Pinocchio
+        reads them: a record written before a check existed (a namespace-hidden mesh path,
+        thousands of attributes, hundreds of joints) or damaged on disk is refused, not
+        served.
+        """
+        why = "its record is damaged"
+        try:
+            urdf = stored.read_text(URDF_FILE)
+            if urdf is None:  # deleted by another process since the listing
+                raise UnknownNameError("robot", stored.id, "robot_id", self.ids())
+            srdf = stored.read_text(SRDF_FILE)
+            root = parse_untrusted_xml(urdf, "urdf", self.limits.xml)
+            check_urdf_document(root, "urdf", self.limits)
+            if srdf is not None:
+                links = {link.get("name", "") for link in root.findall("link")}
+                check_srdf_document(srdf, links, "srdf", self.limits.xml)
+            meta = stored.meta
+            return RobotModel(
+                stored.id,
+                urdf,
+                name=meta.get("name") or stored.id,
+                source=meta.get("source") or "upload",
+                package_dirs=[str(erd_share_dir())],
+                srdf_text=srdf,
+                ee_frame=meta.get("ee_frame"),
+                description=meta.get("description") or "",
+            )
+        except UnknownNameError as exc:
+            if exc.field == "robot_id":
+                raise
+            reason: BaseException = exc
+        except InvalidInputError as exc:  # our own checks: the message holds no host detail
+            reason = exc
+            why = f"it fails today's checks: {exc.field}: {exc.message}"
+        except (
+            KinematicsError,
+            OSError,
+            ValueError,
+            RuntimeError,
+            IndexError,
+            KeyError,
+            TypeError,
+        ) as exc:
+            reason = exc
+        log.error("stored robot %r cannot be loaded: %r", stored.id, reason)
+        raise ConflictError(
+            f"robot {stored.id!r} is stored but cannot be served ({why}); "
+            "delete it and add it again",
+            "robot_id",
+        )
 
     def urdf_text(self, robot_id: str) -> str:
         """The robot's URDF (the catalog file, the generated one for DH robots)."""
@@ -689,8 +534,16 @@ class Registry:
         stored = self._refresh().get(robot_id)
         if stored is None:
             raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
-        text = stored.read_text(TABLE_FILE)
-        return DHTable.from_yaml(text) if text is not None else None
+        try:
+            text = stored.read_text(TABLE_FILE)
+            return DHTable.from_yaml(text) if text is not None else None
+        except (OSError, ValueError) as exc:  # DHError and UnicodeDecodeError included
+            log.error("stored DH table of %r cannot be read: %r", robot_id, exc)
+            raise ConflictError(
+                f"robot {robot_id!r}: its stored DH table is damaged; delete the robot and "
+                "add it again",
+                "robot_id",
+            ) from None
 
     def source(self, robot_id: str) -> str:
         """``example-robot-data``, ``dh`` or ``upload``; raises :class:`UnknownNameError`."""
@@ -762,14 +615,23 @@ class Registry:
     ) -> RobotModel:
         """Add a robot from client-supplied URDF (and SRDF) text, checked first.
 
-        The XML is parsed with defusedxml (no DTD, entities or external references) and
-        checked (:func:`check_urdf_document`) before Pinocchio sees it.
+        The XML is parsed with literal names as Pinocchio reads it, without DTD, entities or
+        external references and within :attr:`limits`, and checked
+        (:func:`check_urdf_document`) before Pinocchio sees it.
         """
         store = self._writable(robot_id, "name")
-        root = parse_untrusted_xml(urdf, "urdf")
-        check_urdf_document(root, "urdf")
+        check_text(description, "description")
+        if ee_frame is not None:
+            check_text(ee_frame, "ee_frame")
+        root = parse_untrusted_xml(urdf, "urdf", self.limits.xml)
+        check_urdf_document(root, "urdf", self.limits)
         if srdf is not None:
-            check_srdf_document(srdf, {link.get("name", "") for link in root.findall("link")})
+            check_srdf_document(
+                srdf,
+                {link.get("name", "") for link in root.findall("link")},
+                "srdf",
+                self.limits.xml,
+            )
         robot = build_checked_model(
             robot_id,
             urdf,

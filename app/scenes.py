@@ -27,6 +27,7 @@ import orjson
 
 from app.kinematics.errors import ConflictError, InvalidInputError, UnknownNameError
 from app.kinematics.obstacles import Obstacle, parse_obstacles
+from app.kinematics.text import check_text
 from app.store import TMP_PREFIX, atomic_write_bytes
 
 NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$"
@@ -131,6 +132,7 @@ class SceneStore:
         validate_name(name)
         if len(description) > MAX_DESCRIPTION:
             raise InvalidInputError(f"at most {MAX_DESCRIPTION} characters", "description")
+        check_text(description, "description")
         scene = Scene(name, description, parse_obstacles(obstacles))
         data = orjson.dumps(scene.to_json(), option=orjson.OPT_INDENT_2)
         path = self._path(name)

@@ -49,6 +49,29 @@ class Settings(BaseSettings):
     )
     max_batch: int = Field(100_000, ge=1, description="Largest batch (configurations, targets).")
     ik_max_timeout_ms: float = Field(1000.0, gt=0, description="Cap on an IK request's budget.")
+    max_xml_elements: int = Field(
+        20_000, ge=100, description="Most XML elements in an uploaded URDF or SRDF."
+    )
+    max_xml_attributes: int = Field(
+        50_000, ge=100, description="Most XML attributes in total in an uploaded URDF or SRDF."
+    )
+    max_xml_attributes_per_element: int = Field(
+        64,
+        ge=8,
+        le=10_000,
+        description="Most attributes on one XML element (the URDF parser's cost is quadratic).",
+    )
+    max_xml_depth: int = Field(32, ge=8, le=1000, description="Deepest XML element nesting.")
+    max_urdf_joints: int = Field(
+        256, ge=1, le=4096, description="Most joints (any type) in an uploaded URDF."
+    )
+    max_robot_dof: int = Field(
+        64,
+        ge=1,
+        le=512,
+        description="Most movable joints in an uploaded URDF (Pinocchio's per-thread Data "
+        "grows as ~34·dof³ bytes: 15 MB at 64, 80 MB at 128, 570 MB at 256).",
+    )
     graceful_timeout_s: int = Field(
         8,
         ge=0,

@@ -50,6 +50,7 @@ from pathlib import Path
 from typing import Any
 
 from app.kinematics.errors import ConflictError, InvalidInputError, UnknownNameError
+from app.kinematics.text import SURROGATE_REASON, has_surrogate
 
 log = logging.getLogger("denavit.store")
 
@@ -173,6 +174,29 @@ def check_robot_id(robot_id: Any, field: str = "id") -> str:
     return robot_id
 
 
+_META_TEXT = ("name", "source", "description", "revision", "created_at")
+
+
+def meta_problem(meta: Mapping[str, Any]) -> tuple[str, str] | None:
+    """``(key, reason)`` for what is wrong with a robot's metadata, or ``None`` if it is fine.
+
+    Text fields must be strings of valid Unicode (a lone surrogate cannot be encoded in a
+    response), ``ee_frame`` a string or null, ``joints`` a non-negative integer.
+    """
+    for key in (*_META_TEXT, "ee_frame"):
+        value = meta.get(key, None if key == "ee_frame" else "")
+        if key == "ee_frame" and value is None:
+            continue
+        if not isinstance(value, str):
+            return key, "must be a string"
+        if has_surrogate(value):
+            return key, SURROGATE_REASON
+    joints = meta.get("joints", 0)
+    if isinstance(joints, bool) or not isinstance(joints, int) or joints < 0:
+        return "joints", "must be a non-negative integer"
+    return None
+
+
 @dataclass(frozen=True)
 class StoredRobot:
     """A complete robot directory, as read from disk.
@@ -245,8 +269,14 @@ class RobotStore:
             os.close(fd)
         return (gen, mtime)
 
-    def load(self, robot_id: str) -> StoredRobot | None:
-        """The complete robot ``robot_id``, or ``None`` (absent, incomplete or unreadable)."""
+    def load(self, robot_id: str, *, validate: bool = True) -> StoredRobot | None:
+        """The complete robot ``robot_id``, or ``None`` (absent, incomplete or unreadable).
+
+        With ``validate`` (the default), a robot whose metadata is damaged (see
+        :func:`meta_problem`) is ``None`` too, with a warning in the log: one bad record on
+        disk must not break listing the others. ``validate=False`` finds it anyway (so it
+        can be deleted).
+        """
         if not ID_PATTERN.fullmatch(robot_id):
             return None
         path = self.root / robot_id
@@ -261,6 +291,10 @@ class RobotStore:
             log.warning("ignoring robot %r: %s does not describe it", robot_id, META_FILE)
             return None
         if not (path / URDF_FILE).is_file():
+            return None
+        problem = meta_problem(meta) if validate else None
+        if problem is not None:
+            log.warning("ignoring robot %r: damaged %s (%s %s)", robot_id, META_FILE, *problem)
             return None
         return StoredRobot(robot_id, path, meta)
 
@@ -325,6 +359,9 @@ class RobotStore:
             "revision": uuid.uuid4().hex,
             "created_at": datetime.now(UTC).isoformat(timespec="seconds"),
         }
+        problem = meta_problem(full_meta)
+        if problem is not None:  # never write a record that load() would ignore
+            raise InvalidInputError(problem[1], problem[0])
         payload = {**files, META_FILE: json.dumps(full_meta, indent=2).encode() + b"\n"}
         tmp, fd = self._temp_dir()
         try:
@@ -358,7 +395,7 @@ class RobotStore:
         :meth:`recover`.
         """
         with self._locked():
-            if self.load(robot_id) is None:
+            if self.load(robot_id, validate=False) is None:
                 raise UnknownNameError("robot", robot_id, "robot_id", self.list())
             trash = self.root / f"{TMP_PREFIX}deleted-{robot_id}-{uuid.uuid4().hex[:12]}"
             os.rename(self.root / robot_id, trash)

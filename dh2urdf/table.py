@@ -76,6 +76,11 @@ DEFAULT_EFFORT = 100.0
 ROBOT_NAME_PATTERN = re.compile(r"[a-z0-9_-]{1,64}")
 JOINT_NAME_PATTERN = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
 MAX_DESCRIPTION_LENGTH = 1000
+#: Largest magnitude of a length (m, after unit conversion) or an angle (rad) in a table.
+MAX_ABS_VALUE = 1e6
+#: Longest integer literal read as a number (longer ones are refused, naming the field:
+#: Python refuses to convert integers of more than 4300 digits, and none is needed here).
+MAX_INT_DIGITS = 400
 
 _TOP_KEYS = ("name", "description", "convention", "units", "base", "tool", "geometry", "joints")
 _JOINT_KEYS = (
@@ -311,6 +316,15 @@ def format_for_path(path: str | Path) -> Literal["yaml", "json"]:
 # ---------------------------------------------------------------------- text loaders
 
 
+class HugeInt(str):
+    """An integer literal too long to convert (kept as its text, refused by the validator)."""
+
+
+def _int_literal(text: str) -> int | HugeInt:
+    digits = len(text.lstrip("+-").replace("_", ""))
+    return HugeInt(text) if digits > MAX_INT_DIGITS else int(text)
+
+
 class _TableLoader(yaml.SafeLoader):
     """Safe YAML loader that rejects duplicate keys and reads ``1e-3`` as a float."""
 
@@ -345,6 +359,17 @@ def _construct_mapping(loader: _TableLoader, node: yaml.MappingNode) -> dict[Any
 _TableLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
 
 
+def _construct_int(loader: _TableLoader, node: yaml.ScalarNode) -> int | HugeInt:
+    text = str(loader.construct_scalar(node))
+    digits = len(text.lstrip("+-").replace("_", ""))
+    if digits > MAX_INT_DIGITS:
+        return HugeInt(text)
+    return yaml.SafeLoader.construct_yaml_int(loader, node)
+
+
+_TableLoader.add_constructor("tag:yaml.org,2002:int", _construct_int)
+
+
 def _load_yaml(text: str) -> Any:
     try:
         return yaml.load(text, Loader=_TableLoader)  # a SafeLoader subclass
@@ -366,7 +391,7 @@ def _load_json(text: str) -> Any:
         return out
 
     try:
-        return json.loads(text, object_pairs_hook=pairs)
+        return json.loads(text, object_pairs_hook=pairs, parse_int=_int_literal)
     except json.JSONDecodeError as exc:
         raise DHError(
             None, f"invalid JSON: line {exc.lineno}, column {exc.colno}: {exc.msg}"
@@ -379,6 +404,8 @@ def _load_json(text: str) -> Any:
 
 
 def _describe(value: Any) -> str:
+    if isinstance(value, HugeInt):
+        return f"an integer literal of {len(value)} digits"
     text = repr(value)
     if len(text) > 40:
         text = text[:37] + "..."
@@ -395,8 +422,10 @@ def _mapping(value: Any, path: str) -> Mapping[str, Any]:
         what = "a mapping (YAML/JSON object)"
         raise DHError(path or None, f"expected {what}, got {_describe(value)}")
     for key in value:
-        if not isinstance(key, str):
+        if not isinstance(key, str) or isinstance(key, HugeInt):
             raise DHError(path or None, f"keys must be strings, got {_describe(key)}")
+        if _SURROGATE.search(key):
+            raise DHError(path or None, "keys must be valid Unicode text (a lone surrogate is not)")
     return value
 
 
@@ -408,6 +437,8 @@ def _check_keys(data: Mapping[str, Any], allowed: Sequence[str], path: str) -> N
 
 
 def _number(value: Any, path: str) -> float:
+    if isinstance(value, HugeInt):
+        raise DHError(path, f"number too large (an integer literal of {len(value)} digits)")
     if isinstance(value, bool) or not isinstance(value, int | float):
         hint = ""
         if isinstance(value, str) and "," in value:
@@ -435,17 +466,36 @@ def _optional_number(data: Mapping[str, Any], key: str, path: str) -> float | No
 
 
 def _string(value: Any, path: str) -> str:
-    if not isinstance(value, str):
+    if not isinstance(value, str) or isinstance(value, HugeInt):
         raise DHError(path, f"expected a string, got {_describe(value)}")
+    if _SURROGATE.search(value):
+        raise DHError(path, "must be valid Unicode text (a lone UTF-16 surrogate is not)")
     return value
 
 
-def _triple(value: Any, path: str, scale: Callable[[float], float]) -> tuple[float, float, float]:
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
+def _bounded(value: float, path: str, unit: str) -> float:
+    """``value`` (SI) unless its magnitude exceeds :data:`MAX_ABS_VALUE`."""
+    if abs(value) > MAX_ABS_VALUE:
+        raise DHError(
+            path, f"magnitude above {MAX_ABS_VALUE:g} {unit} is not accepted, got {value!r} {unit}"
+        )
+    return value
+
+
+def _triple(
+    value: Any, path: str, scale: Callable[[float], float], unit: str
+) -> tuple[float, float, float]:
     if isinstance(value, str | bytes) or not isinstance(value, Sequence):
         raise DHError(path, f"expected a list of 3 numbers, got {_describe(value)}")
     if len(value) != 3:
         raise DHError(path, f"expected a list of 3 numbers, got {len(value)} items")
-    x, y, z = (scale(_number(v, f"{path}[{i}]")) for i, v in enumerate(value))
+    x, y, z = (
+        _bounded(scale(_number(v, f"{path}[{i}]")), f"{path}[{i}]", unit)
+        for i, v in enumerate(value)
+    )
     return (x, y, z)
 
 
@@ -459,8 +509,8 @@ def _transform(
         return Transform()
     m = _mapping(data, path)
     _check_keys(m, _TRANSFORM_KEYS, path)
-    xyz = _triple(m["xyz"], f"{path}.xyz", length) if m.get("xyz") is not None else (0.0,) * 3
-    rpy = _triple(m["rpy"], f"{path}.rpy", angle) if m.get("rpy") is not None else (0.0,) * 3
+    xyz = _triple(m["xyz"], f"{path}.xyz", length, "m") if m.get("xyz") is not None else (0.0,) * 3
+    rpy = _triple(m["rpy"], f"{path}.rpy", angle, "rad") if m.get("rpy") is not None else (0.0,) * 3
     return Transform(xyz=xyz, rpy=rpy)  # type: ignore[arg-type]
 
 
@@ -523,10 +573,10 @@ def _parse_joint(
         expected = ", ".join(repr(t) for t in JOINT_TYPES)
         raise DHError(f"{path}.type", f"unknown joint type {jtype!r} (expected {expected})")
 
-    a = length(_required_number(m, "a", path))
-    alpha = angle(_required_number(m, "alpha", path))
-    d = length(_required_number(m, "d", path))
-    theta = angle(_required_number(m, "theta", path))
+    a = _bounded(length(_required_number(m, "a", path)), f"{path}.a", "m")
+    alpha = _bounded(angle(_required_number(m, "alpha", path)), f"{path}.alpha", "rad")
+    d = _bounded(length(_required_number(m, "d", path)), f"{path}.d", "m")
+    theta = _bounded(angle(_required_number(m, "theta", path)), f"{path}.theta", "rad")
 
     variable = length if jtype == "prismatic" else angle
     raw_lower = _optional_number(m, "lower", path)
@@ -545,8 +595,11 @@ def _parse_joint(
                     raise DHError(f"{path}.{key}", "field required for a prismatic joint")
         if raw_lower is not None and raw_upper is not None and raw_lower > raw_upper:
             raise DHError(f"{path}.lower", f"lower ({_fmt(raw_lower)}) > upper ({_fmt(raw_upper)})")
+        unit = "m" if jtype == "prismatic" else "rad"
         lower = variable(raw_lower) if raw_lower is not None else -math.pi
         upper = variable(raw_upper) if raw_upper is not None else math.pi
+        _bounded(lower, f"{path}.lower", unit)
+        _bounded(upper, f"{path}.upper", unit)
         if lower > upper:
             # Only one bound given and it lies beyond the default of the other one.
             given = "lower" if raw_lower is not None else "upper"
@@ -623,6 +676,7 @@ def _parse_table(data: Any) -> DHTable:
         if value is not None:
             if value < 0:
                 raise DHError("geometry.radius", f"must be >= 0, got {_fmt(value)}")
+            _bounded(value, "geometry.radius", "m")
             radius = value + 0.0
 
     rows = doc.get("joints")

@@ -16,12 +16,14 @@ import numpy as np
 import orjson
 from fastapi import Path, Request
 from fastapi.exceptions import RequestValidationError
-from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, Strict, ValidationError
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
 from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError
+from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
+from app.kinematics.text import SURROGATE_REASON, find_surrogate, has_surrogate
 from app.registry import Registry
 from app.settings import Settings
 
@@ -31,6 +33,17 @@ Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
 Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+
+
+def _valid_text(value: str) -> str:
+    if has_surrogate(value):
+        raise ValueError(SURROGATE_REASON)
+    return value
+
+
+#: A string of valid Unicode: every text field that is stored or echoed uses it (a lone
+#: UTF-16 surrogate, ``"\ud800"`` in JSON, cannot be encoded in a response or a file).
+Text = Annotated[str, AfterValidator(_valid_text)]
 
 T = TypeVar("T")
 S = TypeVar("S", bound=BaseModel)
@@ -189,20 +202,25 @@ def parse_json(raw: bytes) -> Any:
     """Decode a JSON body: orjson, or the standard library for NaN/Infinity tokens.
 
     The standard library accepts NaN and ±Infinity (not JSON, but what many clients send);
-    the request models then reject them with the field's name. Anything else that does not
-    decode, including arrays and objects nested deeper than orjson's 1024 levels (where the
-    standard library would exceed the recursion limit), raises :class:`MalformedBodyError`
-    (a 400 naming the body).
+    the request models then reject them with the field's name. It also decodes a lone
+    UTF-16 surrogate escape (``"\ud800"``), which orjson refuses: that is a 422 naming the
+    field holding it. Anything else that does not decode, including arrays and objects
+    nested deeper than orjson's 1024 levels (where the standard library would exceed the
+    recursion limit), raises :class:`MalformedBodyError` (a 400 naming the body).
     """
     try:
         return orjson.loads(raw)
     except orjson.JSONDecodeError:
         try:
-            return json.loads(raw)
+            obj = json.loads(raw)
         except RecursionError:  # nested deeper than the interpreter's recursion limit
             raise MalformedBodyError(NESTED_TOO_DEEPLY) from None
         except (ValueError, UnicodeDecodeError) as exc:
             raise MalformedBodyError(f"body: malformed JSON ({exc})") from None
+        where = find_surrogate(obj)
+        if where is not None:
+            raise InvalidInputError(SURROGATE_REASON, where) from None
+        return obj
 
 
 def validate_body(model: type[S], obj: Any) -> S:

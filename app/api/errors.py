@@ -25,6 +25,7 @@ from app.kinematics.errors import (
     KinematicsError,
     UnknownNameError,
 )
+from app.kinematics.text import printable
 
 log = logging.getLogger("denavit")
 
@@ -107,12 +108,27 @@ def problem(
     if field is not None:
         body["field"] = field
     body.update({k: v for k, v in extra.items() if v is not None})
+    try:
+        content = orjson.dumps(body)
+    except orjson.JSONEncodeError:  # echoed client text with a lone surrogate
+        content = orjson.dumps(_printable(body))
     return Response(
-        orjson.dumps(body),
+        content,
         status_code=status,
         media_type="application/problem+json",
         headers=headers,
     )
+
+
+def _printable(obj: Any) -> Any:
+    """``obj`` with every string made encodable (lone surrogates become U+FFFD)."""
+    if isinstance(obj, str):
+        return printable(obj)
+    if isinstance(obj, dict):
+        return {printable(str(k)): _printable(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [_printable(v) for v in obj]
+    return obj
 
 
 def _loc(loc: tuple[Any, ...] | list[Any]) -> str:

@@ -21,6 +21,7 @@ from app.api.common import (
     ORJSONResponse,
     RobotId,
     Schema,
+    Text,
     offload,
     parse_json,
     registry,
@@ -128,7 +129,7 @@ class DHGeometryDoc(Schema):
 class DHRowDoc(Schema):
     """One row: joint i's DH parameters."""
 
-    name: str | None = Field(None, description="Joint name (default j<i>, 1-based).")
+    name: Text | None = Field(None, description="Joint name (default j<i>, 1-based).")
     type: Literal["revolute", "prismatic", "continuous"] | None = Field(
         "revolute", description="Joint kind (null: revolute)."
     )
@@ -154,7 +155,7 @@ class DHTableDoc(Schema):
     name: str = Field(
         pattern=ID_PATTERN.pattern, description="Robot id: 1-64 of a-z, 0-9, '_' and '-'."
     )
-    description: str | None = Field("", max_length=1000)
+    description: Text | None = Field("", max_length=1000)
     convention: Literal["standard", "modified"]
     units: DHUnitsDoc | None = Field(default_factory=DHUnitsDoc)
     base: DHTransformDoc | None = Field(None, description="World → DH frame 0.")
@@ -166,22 +167,22 @@ class DHTableDoc(Schema):
 class UrdfUpload(Schema):
     """A robot given as URDF text (and optionally SRDF)."""
 
-    name: str = Field(
+    name: Text = Field(
         max_length=256,
         json_schema_extra={"pattern": ID_PATTERN.pattern},
         description="Robot id: 1-64 of a-z, 0-9, '_' and '-' (used in /robots/{robot_id}).",
     )
-    urdf: str = Field(
+    urdf: Text = Field(
         min_length=1,
         description="URDF document. No DTD or entities; mesh filenames must be "
         "package://<package>/<path> URIs; only revolute, continuous, prismatic and fixed "
         "joints.",
     )
-    srdf: str | None = Field(None, description="SRDF document (disabled collision pairs).")
-    ee_frame: str | None = Field(
+    srdf: Text | None = Field(None, description="SRDF document (disabled collision pairs).")
+    ee_frame: Text | None = Field(
         None, max_length=256, description="Default end-effector frame (default: deepest link)."
     )
-    description: str = Field("", max_length=1000, description="Short description.")
+    description: Text = Field("", max_length=1000, description="Short description.")
 
 
 _WRITE_ERRORS: dict[int | str, dict[str, Any]] = {
@@ -343,10 +344,16 @@ async def upload_urdf_robot(
 ) -> Response:
     """Add a robot from URDF text (and optional SRDF); its id is ``name``.
 
-    The XML is parsed with defusedxml first: DTDs and entity declarations are refused, mesh
-    filenames must be ``package://<package>/<path>`` URIs without ``..``, and the links
-    must form one tree with at least one actuated joint; then Pinocchio builds the model.
-    201 with the robot's description; 409 if the id is taken; 413 past the upload limit.
+    The XML is checked first, read as Pinocchio reads it (names taken literally, namespaces
+    ignored): DTDs and entity declarations are refused, mesh filenames must be exactly
+    ``package://<package>/<path>`` URIs without ``..`` or whitespace, joint axes need a norm
+    of at least 1e-6, lengths and angles at most 1e6, and the links must form one tree with
+    at least one actuated joint; then Pinocchio builds the model. The work a document may
+    cause is bounded (422 naming the limit): XML elements, attributes (in total and per
+    element), nesting depth, joints and movable joints (``DENAVIT_MAX_XML_*``,
+    ``DENAVIT_MAX_URDF_JOINTS``, ``DENAVIT_MAX_ROBOT_DOF``). Text must be valid Unicode
+    (no lone surrogates). 201 with the robot's description; 409 if the id is taken; 413
+    past the upload limit.
     """
     body = await _read_upload(request)
     if isinstance(body, Response):

@@ -14,7 +14,7 @@ from fastapi import APIRouter, Depends, Path, Request
 from pydantic import BaseModel, Field, Strict
 from starlette.responses import Response
 
-from app.api.common import ORJSONResponse, Quat, Schema, Vec3
+from app.api.common import ORJSONResponse, Quat, Schema, Text, Vec3
 from app.api.errors import ERROR_RESPONSES
 from app.api.security import require_token
 from app.kinematics.errors import InvalidInputError
@@ -42,7 +42,7 @@ class ObstaclePose(Schema):
 class ObstacleIn(Schema):
     """A box, sphere, cylinder or capsule in the robot's root frame."""
 
-    name: str = Field(
+    name: Text = Field(
         min_length=1, max_length=MAX_NAME_LENGTH, description="Unique name in the set."
     )
     shape: Literal["box", "sphere", "cylinder", "capsule"] = Field(description="Solid type.")
@@ -75,7 +75,7 @@ class SceneIn(Schema):
     """A new scene."""
 
     name: str = Field(pattern=NAME_PATTERN, description="Scene name (1-64 of A-Z a-z 0-9 _ -).")
-    description: str = Field("", max_length=MAX_DESCRIPTION)
+    description: Text = Field("", max_length=MAX_DESCRIPTION)
     obstacles: list[ObstacleIn] = Field(max_length=MAX_OBSTACLES, description="The obstacles.")
 
 

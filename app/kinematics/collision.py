@@ -57,6 +57,7 @@ GJK warm starts are off, so an answer never depends on what the thread checked b
 
 from __future__ import annotations
 
+import logging
 import threading
 import warnings
 from collections import OrderedDict
@@ -67,16 +68,18 @@ from typing import Any
 import coal
 import numpy as np
 import pinocchio as pin
-from defusedxml import ElementTree
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
+from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 GEOMETRY_MODES = ("mesh", "convex")
 #: Combined robot + obstacle models kept per robot and geometry mode (least recently used
 #: dropped first).
 MAX_CACHED_SCENES = 32
+
+log = logging.getLogger("denavit.collision")
 
 LinkPair = tuple[str, str]
 
@@ -88,13 +91,13 @@ def srdf_disabled_pairs(srdf_text: str | None, links: Iterable[str]) -> set[froz
     Parameters
     ----------
     srdf_text
-        The SRDF document (parsed with defusedxml), or ``None``.
+        The SRDF document (read with literal names, as checked on upload), or ``None``.
     links
         The links with collision geometry (used to expand ``disable_default_collisions``).
     """
     if not srdf_text:
         return set()
-    root = ElementTree.fromstring(srdf_text)
+    root = parse_literal_xml(srdf_text, "srdf", TRUSTED)
     links = list(links)
     disabled: set[frozenset[str]] = set()
     for el in root.iter("disable_default_collisions"):
@@ -171,12 +174,23 @@ def checked_link_pairs(robot: RobotModel, link_joints: dict[str, int]) -> list[L
     return pairs
 
 
+def _failing_mesh(urdf_text: str, message: str) -> str | None:
+    """The URDF's own mesh ``filename`` a loader error is about (never the resolved path)."""
+    root = parse_literal_xml(urdf_text, "urdf", TRUSTED)
+    for mesh in root.iter("mesh"):
+        uri = mesh.get("filename") or ""
+        tail = uri.split("://", 1)[-1]
+        if uri and (uri in message or (tail and tail in message)):
+            return uri
+    return None
+
+
 def collision_links(robot: RobotModel) -> dict[str, int]:
     """Links with ``<collision>`` elements → the Pinocchio joint moving them (URDF order).
 
     Read from the URDF text alone (no mesh is loaded).
     """
-    root = ElementTree.fromstring(robot.urdf_text)
+    root = parse_literal_xml(robot.urdf_text, "urdf", TRUSTED)
     out: dict[str, int] = {}
     for link in root.iter("link"):
         name = link.get("name")
@@ -334,8 +348,15 @@ class CollisionModel:
                 robot.model, robot.urdf_text, pin.COLLISION, package_dirs=robot.package_dirs
             )
         except (ValueError, RuntimeError, OSError, IndexError, KeyError, TypeError) as exc:
+            # The loader's text holds host paths and C++ source locations: log it, answer
+            # with what the client can act on.
+            log.warning("collision geometry of robot %r: %s", robot.id, exc)
+            found = "could not be found" not in str(exc)
+            mesh = _failing_mesh(robot.urdf_text, str(exc))
+            which = f"mesh {mesh!r}" if mesh else "a mesh file"
+            reason = f"{which} is not a readable mesh" if found else f"{which} is missing"
             raise InvalidInputError(
-                f"the collision geometry of robot {robot.id!r} cannot be loaded ({exc})",
+                f"the collision geometry of robot {robot.id!r} cannot be loaded ({reason})",
                 "robot_id",
             ) from None
         if mode == "convex":

@@ -24,9 +24,9 @@ from typing import Any
 
 import numpy as np
 import pinocchio as pin
-from defusedxml import ElementTree
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
 _FRAME_PRIORITY = {
@@ -50,7 +50,8 @@ class Joint:
     """One actuated joint, as the URDF describes it.
 
     Limits are SI (rad or m); ``lower``/``upper`` are ``None`` for a continuous joint.
-    ``axis`` is the URDF axis, expressed in the joint frame.
+    ``axis`` is the unit axis Pinocchio moves the joint along (the URDF ``<axis>``
+    normalised), expressed in the joint frame.
     """
 
     name: str
@@ -85,9 +86,29 @@ def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:
     return tuple(float(v) for v in text.split())
 
 
+def _model_axis(jm: Any) -> tuple[float, float, float] | None:
+    """The axis Pinocchio's joint model moves along (what FK uses), ``None`` if not 1-DoF.
+
+    Read from the joint's motion subspace S (6×1, linear then angular): the angular part
+    for a revolute joint, the linear part for a prismatic one. Pinocchio's URDF parser
+    normalises the URDF ``<axis>`` (``0 0 2`` moves along ``0 0 1``).
+    """
+    if jm.nv != 1:
+        return None
+    S = np.asarray(jm.createData().S, dtype=float).reshape(-1)
+    if S.shape != (6,):
+        return None
+    part = S[3:] if np.any(S[3:]) else S[:3]
+    return (float(part[0]), float(part[1]), float(part[2]))
+
+
 def parse_urdf_joints(urdf_text: str) -> dict[str, dict[str, Any]]:
-    """Joint descriptions from URDF text (parsed with defusedxml), keyed by joint name."""
-    root = ElementTree.fromstring(urdf_text)
+    """Joint descriptions from URDF text, keyed by joint name.
+
+    The XML is read with literal (namespace-unaware) names, as Pinocchio's URDF parser
+    reads it (:func:`app.kinematics.xmldoc.parse_literal_xml`).
+    """
+    root = parse_literal_xml(urdf_text, "urdf", TRUSTED)
     joints: dict[str, dict[str, Any]] = {}
     for j in root.iter("joint"):
         name = j.get("name")
@@ -183,7 +204,7 @@ class RobotModel:
                     type=jtype,
                     parent=desc.get("parent", ""),
                     child=desc.get("child", ""),
-                    axis=tuple(desc.get("axis", (1.0, 0.0, 0.0))),
+                    axis=_model_axis(jm) or tuple(desc.get("axis", (1.0, 0.0, 0.0))),
                     lower=lower,
                     upper=upper,
                     velocity=vel if math.isfinite(vel) else None,

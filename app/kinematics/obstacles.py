@@ -38,6 +38,7 @@ import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.rotations import quaternion_to_matrix
+from app.kinematics.text import check_text
 
 SHAPES = ("box", "sphere", "cylinder", "capsule")
 #: Largest accepted | ‖quaternion‖ − 1 | before normalisation.
@@ -159,6 +160,7 @@ def parse_obstacle(item: Mapping[str, Any], field: str) -> Obstacle:
         raise InvalidInputError("must be a non-empty string", f"{field}.name")
     if len(name) > MAX_NAME_LENGTH:
         raise InvalidInputError(f"must be at most {MAX_NAME_LENGTH} characters", f"{field}.name")
+    check_text(name, f"{field}.name")
     shape = item.get("shape")
     if shape not in SHAPES:
         raise InvalidInputError(
