@@ -504,21 +504,19 @@ class ObservabilityMiddleware:
         elapsed: float | None = None
         method = scope["method"] if scope["method"] in _METHODS else "other"
 
-        def finish() -> float:
-            nonlocal elapsed
-            elapsed = time.perf_counter() - start
-            route = scope.get("route")
-            metrics.finish(method, getattr(route, "path", None) or "unmatched", status, elapsed)
-            return elapsed
-
         async def send_with_id(message: Message) -> None:
-            nonlocal status
-            kind = message["type"]
-            if kind == "http.response.start":
+            nonlocal status, elapsed
+            if message["type"] == "http.response.start":
                 status = message["status"]
                 message["headers"] = [*message.get("headers", ()), id_header]
-            elif kind == "http.response.body" and elapsed is None and not message.get("more_body"):
-                finish()
+            elif (
+                elapsed is None
+                and not message.get("more_body")
+                and message["type"] == "http.response.body"
+            ):
+                elapsed = time.perf_counter() - start
+                route = getattr(scope.get("route"), "path", None) or "unmatched"
+                metrics.finish(method, route, status, elapsed)
             await send(message)
 
         metrics.enter()
@@ -538,9 +536,12 @@ class ObservabilityMiddleware:
         else:
             failed = False
         finally:
-            seconds = finish() if elapsed is None else elapsed
+            if elapsed is None:  # no complete response was sent
+                elapsed = time.perf_counter() - start
+                route = getattr(scope.get("route"), "path", None) or "unmatched"
+                metrics.finish(method, route, status, elapsed)
             if self.access_log and _access.isEnabledFor(logging.INFO):
-                route = scope.get("route")
+                template = getattr(scope.get("route"), "path", None) or "unmatched"
                 access_line(
                     method,
                     scope["path"],
@@ -548,9 +549,9 @@ class ObservabilityMiddleware:
                     {
                         "method": method,
                         "path": scope["path"],
-                        "route": getattr(route, "path", None) or "unmatched",
+                        "route": template,
                         "status": status,
-                        "duration_ms": round(seconds * 1000.0, 3),
+                        "duration_ms": round(elapsed * 1000.0, 3),
                     },
                 )
             if not failed:
