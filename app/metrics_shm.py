@@ -16,7 +16,7 @@ File layout (native byte order)::
 
 A writer appends an entry (key and zeroed values) before it raises ``used``; values are
 8-byte aligned, so a reader sees each value whole (one aligned store) and never an entry
-half-written. The file grows by doubling (rarely: 64 KiB hold about 300 routes).
+half-written. The file grows by doubling (rarely: 64 KiB hold a few hundred keys).
 
 The directory of a service instance is keyed by the process that owns the workers (the
 uvicorn supervisor with ``--workers`` > 1, else the serving process itself): its pid, its
