@@ -94,6 +94,7 @@ import pinocchio as pin
 from app.kinematics.analysis import ROW_NAMES, support_columns, task_rows
 from app.kinematics.errors import ConflictError, InvalidInputError, UnknownNameError
 from app.kinematics.models import RobotModel
+from app.kinematics.procwatch import kill_self, set_parent_death_signal, watch_parent
 from app.store import atomic_write_bytes
 
 #: Largest number of cells (voxels × orientation bins) of one map (float32: 4 bytes each).
@@ -646,7 +647,13 @@ def _worker_main(
 ) -> None:
     """A build process: take chunks from ``tasks`` until ``None``, fold them into a partial
     map of its own (max per cell), report each chunk's size, then send the partial map
-    (reached cells and their values) and exit."""
+    (reached cells and their values) and exit.
+
+    It dies with the process that started the build (however that one ends, SIGKILL
+    included) and with its forkserver: nothing else would end it once its queues are gone.
+    """
+    set_parent_death_signal()  # the forkserver (see app.kinematics.forkserver_init)
+    watch_parent(kill_self)  # the process that started the build
     try:
         robot = RobotModel(**robot_args)
         spec = MapSpec(**spec_args)
@@ -810,9 +817,10 @@ def _build_in_processes(
 
 
 def _context() -> multiprocessing.context.BaseContext:
-    """Forkserver: workers fork from a clean server process, never from this threaded one."""
+    """Forkserver: workers fork from a clean server process, never from this threaded one.
+    The forkserver dies with the process that started it (``forkserver_init``)."""
     ctx = multiprocessing.get_context("forkserver")
-    ctx.set_forkserver_preload(["app.kinematics.reachability"])
+    ctx.set_forkserver_preload(["app.kinematics.forkserver_init", "app.kinematics.reachability"])
     return ctx
 
 

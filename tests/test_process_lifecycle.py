@@ -1,0 +1,155 @@
+"""Processes die with their parent: kill -9 of the uvicorn worker that owns a reachability
+build, or of the uvicorn supervisor, leaves no process behind (forkserver, build
+processes, resource tracker, workers), checked in the process table (/proc)."""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import signal
+import sys
+import time
+from pathlib import Path
+
+import httpx
+import pytest
+
+from tests.live import serve
+
+pytestmark = pytest.mark.skipif(
+    not sys.platform.startswith("linux"), reason="walks /proc for the process tree"
+)
+
+BASE = "/robots/planar2/reachability"
+#: A build that runs for minutes with a process per core (cancelled or killed long before).
+LONG_BUILD = {
+    "voxel_size": 0.05,
+    "bounds": {"min": [-2, -2, -0.025], "max": [2, 2, 0.025]},
+    "orientation_divisions": 0,
+    "samples": 500_000_000,
+}
+#: How long the former descendants may take to go (generous: a loaded machine is slow).
+GONE_WITHIN_S = 30.0
+
+
+def _stat(pid: int) -> tuple[str, int] | None:
+    """State letter and parent pid of ``pid`` (``None`` if it does not exist)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            text = f.read().decode("ascii", "replace")
+    except OSError:
+        return None
+    fields = text[text.rfind(")") + 2 :].split()
+    return fields[0], int(fields[1])
+
+
+def parent(pid: int) -> int:
+    """The parent pid of ``pid`` (0 if it does not exist)."""
+    stat = _stat(pid)
+    return stat[1] if stat else 0
+
+
+def running(pid: int) -> bool:
+    """Whether ``pid`` is in the process table and not a zombie (or dead)."""
+    stat = _stat(pid)
+    return stat is not None and stat[0] not in {"Z", "X"}
+
+
+def descendants(pid: int) -> set[int]:
+    """Every process below ``pid`` in the process tree (children, their children...)."""
+    children: dict[int, list[int]] = {}
+    for name in os.listdir("/proc"):
+        if name.isdigit() and (stat := _stat(int(name))) is not None:
+            children.setdefault(stat[1], []).append(int(name))
+    out: set[int] = set()
+    todo = [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in out:
+                out.add(child)
+                todo.append(child)
+    return out
+
+
+def cmdline(pid: int) -> str:
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as f:
+            return f.read().replace(b"\0", b" ").decode(errors="replace")
+    except OSError:
+        return ""
+
+
+def server_pid(url: str) -> int:
+    """The pid of the ``uvicorn`` process started by tests.live.serve for ``url``."""
+    port = url.rsplit(":", 1)[1]
+    for name in os.listdir("/proc"):
+        if name.isdigit() and f"--port {port} " in cmdline(int(name)) + " ":
+            if "uvicorn" in cmdline(int(name)):
+                return int(name)
+    raise AssertionError(f"no uvicorn process for {url}")
+
+
+def start_long_build(url: str, data: Path) -> tuple[int, set[int]]:
+    """Post :data:`LONG_BUILD`; once its build processes run, the pid of the worker that owns
+    the job and that worker's descendants (forkserver, build processes...)."""
+    r = httpx.post(url + BASE, json=LONG_BUILD, timeout=30)
+    assert r.status_code == 202, r.text
+    job_file = data / "maps" / ".jobs" / f"{r.json()['job_id']}.json"
+    end = time.monotonic() + 120
+    while True:
+        owner, tree = 0, set()
+        with contextlib.suppress(OSError, ValueError, KeyError):
+            record = json.loads(job_file.read_bytes())
+            owner = record["owner_pid"] if record["status"] == "running" else 0
+        if owner:
+            tree = descendants(owner)
+            # the forkserver and its build processes (at least 2 processes below the owner)
+            forkservers = [p for p in tree if "forkserver" in cmdline(p) and parent(p) == owner]
+            if forkservers and descendants(forkservers[0]):
+                return owner, tree
+        assert time.monotonic() < end, f"the build processes did not start: {tree}"
+        time.sleep(0.1)
+
+
+def wait_gone(pids: set[int]) -> set[int]:
+    """Poll until none of ``pids`` runs (or :data:`GONE_WITHIN_S`); the ones still running."""
+    end = time.monotonic() + GONE_WITHIN_S
+    while (left := {p for p in pids if running(p)}) and time.monotonic() < end:
+        time.sleep(0.1)
+    return left
+
+
+def kill_all(pids: set[int]) -> None:
+    """Clean up after a failed check: the test must not leave orphans either."""
+    for pid in pids:
+        with contextlib.suppress(ProcessLookupError):
+            os.kill(pid, signal.SIGKILL)
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_killing_the_build_owner_leaves_no_process(tmp_path, workers) -> None:
+    data = tmp_path / "data"
+    args = ("--workers", "2") if workers == 2 else ()
+    with serve(data, *args) as url:
+        owner, tree = start_long_build(url, data)
+        assert owner == server_pid(url) if workers == 1 else owner in descendants(server_pid(url))
+        os.kill(owner, signal.SIGKILL)
+        left = wait_gone(tree)
+        kill_all(left)
+        assert not left, [(p, cmdline(p)) for p in left]
+        if workers == 2:  # the supervisor replaced the worker: the service still answers
+            assert httpx.get(url + "/health", timeout=30).status_code == 200
+
+
+def test_killing_the_supervisor_leaves_no_process(tmp_path) -> None:
+    data = tmp_path / "data"
+    with serve(data, "--workers", "2") as url:
+        master = server_pid(url)
+        start_long_build(url, data)
+        tree = descendants(master)
+        assert len(tree) >= 4  # 2 workers, a forkserver, build processes
+        os.kill(master, signal.SIGKILL)
+        left = wait_gone(tree)
+        kill_all(left)
+        assert not left, [(p, cmdline(p)) for p in left]
