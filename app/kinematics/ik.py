@@ -273,6 +273,13 @@ class Chain:
         return _k_smallest(self.sample_distances(target)[0], k)
 
 
+def _frame_jacobian_6xn(
+    model: pin.Model, data: pin.Data, fid: int, rf: pin.ReferenceFrame
+) -> np.ndarray:
+    """``pin.getFrameJacobian`` as a (6, nv) array whatever nv (Pinocchio returns (6,) for 1)."""
+    return pin.getFrameJacobian(model, data, fid, rf).reshape(6, -1)
+
+
 def _k_smallest(d: np.ndarray, k: int) -> np.ndarray:
     """Indices of the k smallest entries of ``d``, in increasing order."""
     k = min(k, d.size)
@@ -651,6 +658,10 @@ class _Search:
             pin.log3,
             pin.Jlog3,
         )
+        if model.nv == 1:
+            # Pinocchio hands back a 1-D array (6,) for a model with one degree of freedom
+            # (a 1-DoF arm, or one joint and its mimic followers): keep it a 6×1 matrix.
+            gfj = _frame_jacobian_6xn
         LWA = pin.LOCAL_WORLD_ALIGNED
         posv = _posv
         mu, damp, gain = _MU, _DAMP, _NULL_GAIN
