@@ -21,7 +21,7 @@ from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
 from app.api.errors import MalformedBodyError
-from app.kinematics.models import RobotModel
+from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
 from app.registry import Registry
 from app.settings import Settings
 
@@ -31,6 +31,13 @@ Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
 Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+#: A joint value (rad or m) within ±MAX_JOINT_VALUE, the one bound of every configuration
+#: (:data:`app.kinematics.models.MAX_JOINT_VALUE`; fast paths check it with
+#: :func:`~app.kinematics.models.check_joint_values`).
+JointValue = Annotated[Finite, Field(ge=-MAX_JOINT_VALUE, le=MAX_JOINT_VALUE)]
+#: A target coordinate (m) within ±MAX_POSITION.
+Coordinate = Annotated[Finite, Field(ge=-MAX_POSITION, le=MAX_POSITION)]
+Position3 = Annotated[list[Coordinate], Field(min_length=3, max_length=3)]
 
 T = TypeVar("T")
 S = TypeVar("S", bound=BaseModel)
@@ -47,13 +54,13 @@ class Schema(BaseModel):
 class ConfigurationIn(Schema):
     """A configuration: ``q`` in joint order, or a ``joint_positions`` map (not both)."""
 
-    q: list[Finite] | None = Field(
+    q: list[JointValue] | None = Field(
         None,
         description="One value per actuated joint, in the order of GET /robots/{id} "
         "(rad for revolute and continuous joints, m for prismatic ones).",
         max_length=1024,
     )
-    joint_positions: dict[str, Finite] | None = Field(
+    joint_positions: dict[str, JointValue] | None = Field(
         None,
         description="Joint name → value (rad or m); joints not given take their neutral value.",
         max_length=1024,

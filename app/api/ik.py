@@ -14,10 +14,10 @@ from app.api.common import (
     Finite,
     Matrix4,
     ORJSONResponse,
+    Position3,
     Quat,
     RobotId,
     Schema,
-    Vec3,
     load_robot,
     offload,
     registry,
@@ -27,7 +27,12 @@ from app.api.scenes import ObstacleIn, resolve_obstacles, scene_store
 from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.models import (
+    MAX_POSITION,
+    RobotModel,
+    check_bounded,
+    check_joint_value,
+)
 from app.kinematics.rotations import quaternion_to_matrix
 from app.observability import record_ik
 from app.registry import Registry
@@ -53,7 +58,7 @@ MODE_DOC = (
 class Target(Schema):
     """Desired placement of the frame in the root (world) frame."""
 
-    position: Vec3 | None = Field(None, description="[x, y, z] in metres.")
+    position: Position3 | None = Field(None, description="[x, y, z] in metres.")
     orientation: Quat | None = Field(
         None, description="Quaternion [x, y, z, w]; normalised if |q| is within 1e-3 of 1."
     )
@@ -79,10 +84,13 @@ class IKOptions(Schema):
         description="Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); "
         "0 frees a component (not checked against the tolerance).",
     )
+    # Finite, not JointValue: the union's validation errors would be named
+    # seed.list[constrained-float].4; seed_configuration checks the bound, naming seed.4.
     seed: list[Finite] | dict[str, Finite] | None = Field(
         None,
         description="Start configuration: one value per joint (joint order) or joint → value "
-        "(others: middle of their limits). Default: the middle of the joint limits.",
+        "(others: middle of their limits). Default: the middle of the joint limits. Values "
+        "within ±10000 (rad or m), as every configuration.",
     )
     tolerance: Tolerance = Field(default_factory=Tolerance)
     timeout_ms: Positive = Field(
@@ -198,12 +206,15 @@ def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE
             raise InvalidInputError(
                 "the rotation part must be orthonormal with determinant +1", f"{field}.matrix"
             )
+        for i in range(3):  # the translation column: target.matrix.<row>.3
+            check_bounded(M[i, 3], f"{field}.matrix.{i}.3", MAX_POSITION, "m")
         U, _, Vt = np.linalg.svd(R)  # nearest rotation (removes rounding)
         return pin.SE3(U @ Vt, M[:3, 3].copy())
     p = np.zeros(3)
     R = np.eye(3)
     if target.position is not None:
         p = np.array(target.position, dtype=float)
+        check_bounded(p, f"{field}.position", MAX_POSITION, "m")
     elif mode != "orientation":
         raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
     if target.orientation is not None:
@@ -227,7 +238,8 @@ def seed_configuration(robot: RobotModel, seed: Any) -> np.ndarray:
     if isinstance(seed, dict):
         out = robot.mid_range()
         for name, value in seed.items():
-            out[robot.joint_index(name, field=f"seed.{name}")] = value
+            idx = robot.joint_index(name, field=f"seed.{name}")
+            out[idx] = check_joint_value(value, f"seed.{name}")
         return out
     return robot.configuration(seed, field="seed")
 

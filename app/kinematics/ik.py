@@ -91,7 +91,7 @@ from scipy.linalg.lapack import dposv as _posv
 from app.kinematics import analytic_ik, ik_kernel
 from app.kinematics.analytic_ik import candidates
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel, check_joint_values
 
 Mode = Literal["pose", "position", "orientation"]
 Status = Literal["converged", "not_converged", "timeout"]
@@ -191,8 +191,11 @@ class Chain:
         self.cont = np.flatnonzero(cont)
         self.cont_q = np.array([j.idx_q for j in joints if j.continuous], dtype=int)
         self.cont_q1 = self.cont_q + 1
-        self.lower = robot.lower[self.active].copy()
-        self.upper = robot.upper[self.active].copy()
+        # Searched within the limits, and within ±MAX_JOINT_VALUE (what every endpoint accepts
+        # back) when a URDF gives wider limits; continuous joints (±inf) are wrapped instead.
+        lo, hi = robot.lower[self.active], robot.upper[self.active]
+        self.lower = np.where(np.isfinite(lo), np.maximum(lo, -MAX_JOINT_VALUE), lo)
+        self.upper = np.where(np.isfinite(hi), np.minimum(hi, MAX_JOINT_VALUE), hi)
         # Restart sampling box: the limits, or one turn for continuous joints.
         self.sample_lo = np.where(np.isfinite(self.lower), self.lower, -math.pi)
         self.sample_hi = np.where(np.isfinite(self.upper), self.upper, math.pi)
@@ -313,7 +316,7 @@ def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
     """Position error (m), rotation angle (rad) and e = [p − p_t; log3(R R_tᵀ)] (world axes)."""
     ep = T.translation - target.translation
     eR = pin.log3(T.rotation @ target.rotation.T)
-    return float(math.sqrt(ep @ ep)), float(math.sqrt(eR @ eR)), np.concatenate([ep, eR])
+    return math.hypot(*ep), math.hypot(*eR), np.concatenate([ep, eR])
 
 
 def wrap_angle(x: np.ndarray) -> np.ndarray:
@@ -438,6 +441,9 @@ def solve(
     q_seed = ch.mid_range.copy() if seed is None else np.array(seed, dtype=float)
     if q_seed.shape != (robot.n,):
         raise InvalidInputError(f"expected {robot.n} values", "seed")
+    check_joint_values(q_seed, "seed")
+    if not all(math.isfinite(v) and abs(v) <= MAX_POSITION for v in target.translation):
+        raise InvalidInputError(f"must be finite, within ±{MAX_POSITION:g} m", "target.position")
     rows, sw, check_pos, check_rot = _task(mode, weights)
     deadline = t_start + timeout_ms * 1e-3
     search = _Search(robot, ch, target, q_seed, rows, sw, check_pos, check_rot, tol_p, tol_r)
@@ -523,7 +529,8 @@ class _Search:
         dp = T.translation - target.translation
         phi = pin.log3(T.rotation @ target.rotation.T)
         ep2, er2 = float(dp @ dp), float(phi @ phi)
-        ep_full, er_full = math.sqrt(ep2), math.sqrt(er2)
+        # hypot: no overflow of the squares (the errors of huge robots stay numbers)
+        ep_full, er_full = math.hypot(*dp), math.hypot(*phi)
         if self.full_pose:
             ep, er, energy = ep_full, er_full, ep2 + er2
         else:
@@ -532,8 +539,10 @@ class _Search:
             energy = self._energy(e)
         if energy < self.best_energy:
             self.best_energy, self.best_q = energy, q
-        if ep > self.tol_p or er > self.tol_r:
+        if not (ep <= self.tol_p and er <= self.tol_r):
             return False
+        if not (math.isfinite(ep_full) and math.isfinite(er_full)):
+            return False  # a pose that overflows float64 (even on unchecked components)
         for s in self.solutions:
             if joint_distance(robot, s.q, q).max() <= DISTINCT:
                 return False
@@ -867,6 +876,14 @@ class _Search:
         pin.forwardKinematics(model, data, robot.to_pin(q))
         T = pin.updateFramePlacement(model, data, self.ch.frame_id)
         ep, er, _ = pose_errors(T, self.target)
+        if not (math.isfinite(ep) and math.isfinite(er)):
+            # The pose itself overflows float64 (a robot hundreds of orders of magnitude too
+            # big): there is no error to report, so no answer rather than a null one.
+            raise InvalidInputError(
+                f"frame {self.ch.frame!r} has no finite pose at the configurations searched: "
+                "the robot's dimensions overflow double precision",
+                "robot_id",
+            )
         status: Status = "timeout" if self.timed_out else "not_converged"
         return IKResult(
             False, status, q, ep, er, [], self.iterations, self.restarts, elapsed, method
