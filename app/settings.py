@@ -49,6 +49,14 @@ class Settings(BaseSettings):
     )
     max_batch: int = Field(100_000, ge=1, description="Largest batch (configurations, targets).")
     ik_max_timeout_ms: float = Field(1000.0, gt=0, description="Cap on an IK request's budget.")
+    ik_max_request_s: float = Field(
+        30.0,
+        gt=0,
+        le=86400,
+        allow_inf_nan=False,
+        description="Cap on an IK batch's total budget, targets × timeout_ms (s): one request "
+        "cannot hold a pool worker longer.",
+    )
     graceful_timeout_s: int = Field(
         8,
         ge=0,

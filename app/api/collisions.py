@@ -7,6 +7,7 @@ distances) are those of :mod:`app.kinematics.collision`; see docs/collisions.md.
 
 from __future__ import annotations
 
+import threading
 from typing import Annotated, Literal
 
 import numpy as np
@@ -21,6 +22,7 @@ from app.api.common import (
     Schema,
     load_robot,
     offload,
+    offload_cancellable,
     registry,
 )
 from app.api.errors import ERROR_RESPONSES
@@ -193,9 +195,17 @@ async def check_collisions(
     return ORJSONResponse(_check(robot, q, obstacles, body))
 
 
-def _check_batch(robot: RobotModel, qs: np.ndarray, obstacles: tuple[Obstacle, ...], body) -> dict:
+def _check_batch(
+    robot: RobotModel,
+    qs: np.ndarray,
+    obstacles: tuple[Obstacle, ...],
+    body,
+    cancel: threading.Event | None = None,
+) -> dict:
     cm = collision_model(robot, body.geometry)
-    reports = cm.check_batch(qs, obstacles, margin=body.margin, distances=body.distances)
+    reports = cm.check_batch(
+        qs, obstacles, margin=body.margin, distances=body.distances, cancel=cancel
+    )
     flags = [r.in_collision for r in reports]
     first = next((i for i, f in enumerate(flags) if f), None)
     out = {
@@ -245,7 +255,8 @@ async def check_collisions_batch(
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     qs = np.array(body.configurations, dtype=float)
     check_joint_values(qs, "configurations")
-    return ORJSONResponse(await offload(_check_batch, robot, qs, obstacles, body))
+    out = await offload_cancellable(request, _check_batch, robot, qs, obstacles, body)
+    return ORJSONResponse(out)
 
 
 @router.get(

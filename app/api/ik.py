@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 import time
 from typing import Annotated, Any, Literal
 
@@ -19,7 +20,7 @@ from app.api.common import (
     RobotId,
     Schema,
     load_robot,
-    offload,
+    offload_cancellable,
     registry,
 )
 from app.api.errors import ERROR_RESPONSES
@@ -292,7 +293,14 @@ def _named(robot: RobotModel, q: np.ndarray) -> dict[str, float]:
     return dict(zip(robot.joint_names, q.tolist(), strict=True))
 
 
-def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict, n: int) -> dict:
+def _solve_one(
+    robot: RobotModel,
+    target: pin.SE3,
+    seed: np.ndarray,
+    opts: dict,
+    n: int,
+    cancel: threading.Event | None = None,
+) -> dict:
     frame = opts["frame"]
     res = ik.solve(
         robot,
@@ -306,6 +314,7 @@ def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict,
         max_iterations=opts["max_iterations"],
         num_solutions=n,
         accept=_accept(robot, opts),
+        cancel=cancel,
     )
     record_ik(res.success)
     return {
@@ -335,8 +344,15 @@ def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict,
 
 
 def _solve_batch(
-    robot: RobotModel, targets: list[pin.SE3], seed: np.ndarray, opts: dict, chain: bool
+    robot: RobotModel,
+    targets: list[pin.SE3],
+    seed: np.ndarray,
+    opts: dict,
+    chain: bool,
+    cancel: threading.Event | None = None,
 ) -> dict:
+    """Solve ``targets`` in order; ``cancel`` (set when the client left) is checked between
+    targets and inside each solve."""
     t0 = time.perf_counter()
     results = []
     solved = 0
@@ -354,6 +370,7 @@ def _solve_batch(
             timeout_ms=opts["timeout_ms"],
             max_iterations=opts["max_iterations"],
             accept=accept,
+            cancel=cancel,
         )
         record_ik(res.success)
         solved += res.success
@@ -412,7 +429,9 @@ async def solve_ik(
     if body.timeout_ms <= INLINE_BUDGET_MS and opts["collisions"] is None:
         out = _solve_one(robot, target, seed, opts, body.num_solutions)
     else:
-        out = await offload(_solve_one, robot, target, seed, opts, body.num_solutions)
+        out = await offload_cancellable(
+            request, _solve_one, robot, target, seed, opts, body.num_solutions
+        )
     return ORJSONResponse(out)
 
 
@@ -431,13 +450,25 @@ async def solve_ik_batch(
     """IK for many targets of one frame, in order, computed in the work pool.
 
     With `chain_seeds` (default) each target is seeded with the previous solution, which
-    keeps a trajectory on one branch; otherwise every target starts from `seed`.
+    keeps a trajectory on one branch; otherwise every target starts from `seed`. The
+    request's total budget, targets × `timeout_ms`, may not exceed the server's
+    `ik_max_request_s` (default 30 s; else 422 naming `targets`), and the work stops when
+    the client disconnects.
     """
     _budget(request, body.timeout_ms)
     limit = request.app.state.settings.max_batch
     if len(body.targets) > limit:
         raise InvalidInputError(
             f"{len(body.targets)} targets exceed the limit of {limit}", "targets"
+        )
+    total_s = len(body.targets) * body.timeout_ms * 1e-3
+    cap_s = request.app.state.settings.ik_max_request_s
+    if total_s > cap_s:
+        raise InvalidInputError(
+            f"{len(body.targets)} targets × {body.timeout_ms:g} ms = {total_s:g} s exceeds the "
+            f"server's budget of {cap_s:g} s per request: send fewer targets per request, or "
+            "a smaller timeout_ms",
+            "targets",
         )
     robot = await load_robot(reg, robot_id)
     opts = _options(robot, body)
@@ -446,5 +477,7 @@ async def solve_ik_batch(
         target_placement(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)
     ]
     seed = seed_configuration(robot, body.seed)
-    out = await offload(_solve_batch, robot, targets, seed, opts, body.chain_seeds)
+    out = await offload_cancellable(
+        request, _solve_batch, robot, targets, seed, opts, body.chain_seeds
+    )
     return ORJSONResponse(out)

@@ -79,6 +79,7 @@ predicate, e.g. collision-free) before it is reported as a success.
 from __future__ import annotations
 
 import math
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -90,7 +91,7 @@ from scipy.linalg.lapack import dposv as _posv
 
 from app.kinematics import analytic_ik, ik_kernel
 from app.kinematics.analytic_ik import candidates
-from app.kinematics.errors import InvalidInputError
+from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel, check_joint_values
 
 Mode = Literal["pose", "position", "orientation"]
@@ -283,6 +284,11 @@ def _frame_jacobian_6xn(
     return pin.getFrameJacobian(model, data, fid, rf).reshape(6, -1)
 
 
+def _never() -> bool:
+    """The ``cancel.is_set`` of a search nobody can cancel."""
+    return False
+
+
 def _k_smallest(d: np.ndarray, k: int) -> np.ndarray:
     """Indices of the k smallest entries of ``d``, in increasing order."""
     k = min(k, d.size)
@@ -377,6 +383,7 @@ def solve(
     accept: Callable[[np.ndarray], bool] | None = None,
     analytic: bool = True,
     rng: np.random.Generator | None = None,
+    cancel: threading.Event | None = None,
 ) -> IKResult:
     """Joint configurations placing ``frame`` at ``target``.
 
@@ -411,6 +418,10 @@ def solve(
     rng
         Random generator for restarts (default: a fixed per-chain table of uniform samples,
         so answers are reproducible).
+    cancel
+        Optional event: once set (the caller's client went away), the search stops within
+        one iteration (the Python loop) or one attempt (compiled, ≤ 20 iterations) and
+        :class:`~app.kinematics.errors.Cancelled` is raised.
 
     Returns
     -------
@@ -446,9 +457,12 @@ def solve(
         raise InvalidInputError(f"must be finite, within ±{MAX_POSITION:g} m", "target.position")
     rows, sw, check_pos, check_rot = _task(mode, weights)
     deadline = t_start + timeout_ms * 1e-3
+    if cancel is not None and cancel.is_set():
+        raise Cancelled()
     search = _Search(robot, ch, target, q_seed, rows, sw, check_pos, check_rot, tol_p, tol_r)
     search.accept = accept
     search.wanted = num_solutions
+    search.cancel = cancel
 
     method = "numeric"
     if analytic:
@@ -490,6 +504,7 @@ class _Search:
         self.check_pos, self.check_rot = check_pos, check_rot
         self.tol_p, self.tol_r = tol_p, tol_r
         self.accept: Callable[[np.ndarray], bool] | None = None
+        self.cancel: threading.Event | None = None
         self.wanted = 1
         self.solutions: list[IKSolution] = []
         self.iterations = 0
@@ -590,6 +605,7 @@ class _Search:
         best_q = q_ref.copy()
         have_best = False
         perf = time.perf_counter
+        cancelled = self.cancel.is_set if self.cancel is not None else _never
         attempt = ik_kernel.attempt
         args = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, lo, hi, ch.cont_mask, Rt, pt, q_ref)
         qa = q_ref.copy()
@@ -614,6 +630,8 @@ class _Search:
                 if perf() >= deadline:
                     self.timed_out = True
                     return
+                if cancelled():
+                    raise Cancelled()
                 before = best[0]
                 outcome, n = attempt(
                     qa, *args,
@@ -701,6 +719,7 @@ class _Search:
         use_jlog = 0 < rows_r.size < 3
         nearest_first, nearest_ratio, rot_w = _NEAREST_FIRST, _NEAREST_RATIO, _ROT_WEIGHT
         null_floor = _NULL_FLOOR
+        cancelled = self.cancel.is_set if self.cancel is not None else _never
         try:
             while True:
                 if it >= cap:
@@ -708,6 +727,8 @@ class _Search:
                 if perf() >= deadline:
                     self.timed_out = True
                     return
+                if cancelled():
+                    raise Cancelled()
                 # ---- kinematics at qa
                 if all_plain:
                     qp[plain_q] = qa
