@@ -72,6 +72,14 @@ class Settings(BaseSettings):
         description="Most movable joints in an uploaded URDF (Pinocchio's per-thread Data "
         "grows as ~34·dof³ bytes: 15 MB at 64, 80 MB at 128, 570 MB at 256).",
     )
+    ik_max_request_s: float = Field(
+        30.0,
+        gt=0,
+        le=86400,
+        allow_inf_nan=False,
+        description="Cap on an IK batch's total budget, targets × timeout_ms (s): one request "
+        "cannot hold a pool worker longer.",
+    )
     graceful_timeout_s: int = Field(
         8,
         ge=0,

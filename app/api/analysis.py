@@ -19,6 +19,7 @@ from pydantic import BaseModel, Field
 from app.api.common import (
     ConfigurationIn,
     Finite,
+    JointValue,
     ORJSONResponse,
     RobotId,
     Schema,
@@ -44,6 +45,7 @@ from app.kinematics.analysis import (
 )
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.jacobian import Reference
+from app.kinematics.models import check_joint_values
 from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["analysis"])
@@ -126,7 +128,7 @@ class ManipulabilityResponse(BaseModel):
 class ManipulabilityBatchRequest(TaskOptions):
     """Many configurations, one task."""
 
-    configurations: list[list[Finite]] = Field(
+    configurations: list[list[JointValue]] = Field(
         description="N configurations, each one value per joint in joint order (rad, m)."
     )
 
@@ -224,7 +226,9 @@ def _batch_body(raw: bytes, n_joints: int) -> tuple[ManipulabilityBatchRequest, 
     if isinstance(obj, dict) and "configurations" in obj:
         qs = finite_matrix(obj["configurations"], n_joints)
         if qs is not None and b"true" not in raw and b"false" not in raw:
-            return validate_body(ManipulabilityBatchRequest, {**obj, "configurations": []}), qs
+            body = validate_body(ManipulabilityBatchRequest, {**obj, "configurations": []})
+            check_joint_values(qs, "configurations")
+            return body, qs
     body = validate_body(ManipulabilityBatchRequest, obj)
     for i, row in enumerate(body.configurations):
         if len(row) != n_joints:
@@ -232,7 +236,9 @@ def _batch_body(raw: bytes, n_joints: int) -> tuple[ManipulabilityBatchRequest, 
                 f"expected {n_joints} values (one per joint), got {len(row)}",
                 f"configurations.{i}",
             )
-    return body, np.array(body.configurations, dtype=float).reshape(-1, n_joints)
+    qs = np.array(body.configurations, dtype=float).reshape(-1, n_joints)
+    check_joint_values(qs, "configurations")
+    return body, qs
 
 
 @router.post(

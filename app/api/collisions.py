@@ -7,6 +7,7 @@ distances) are those of :mod:`app.kinematics.collision`; see docs/collisions.md.
 
 from __future__ import annotations
 
+import threading
 from typing import Annotated, Literal
 
 import numpy as np
@@ -15,12 +16,13 @@ from pydantic import BaseModel, Field, Strict
 
 from app.api.common import (
     ConfigurationIn,
-    Finite,
+    JointValue,
     ORJSONResponse,
     RobotId,
     Schema,
     load_robot,
     offload,
+    offload_cancellable,
     registry,
 )
 from app.api.errors import ERROR_RESPONSES
@@ -32,7 +34,7 @@ from app.kinematics.collision import (
     report_json,
 )
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.models import RobotModel, check_joint_values
 from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle
 from app.registry import Registry
 from app.scenes import SceneStore
@@ -41,21 +43,6 @@ router = APIRouter(prefix="/robots/{robot_id}", tags=["collisions"])
 
 #: Obstacle counts above this are checked in the work pool rather than on the event loop.
 INLINE_OBSTACLES = 8
-#: Largest |joint value| (rad or m) checked: geometry placed kilometres away is meaningless
-#: and drives coal's arithmetic out of range.
-MAX_JOINT_VALUE = 1e4
-
-
-def _bounded(qs: np.ndarray, field: str) -> None:
-    """422 naming the first joint value beyond ±MAX_JOINT_VALUE."""
-    bad = np.argwhere(np.abs(qs) > MAX_JOINT_VALUE)
-    if bad.size:
-        where = ".".join(str(int(i)) for i in bad[0])
-        raise InvalidInputError(
-            f"joint values must lie within ±{MAX_JOINT_VALUE:g} (rad or m)", f"{field}.{where}"
-        )
-
-
 GeometryMode = Literal["mesh", "convex"]
 Margin = Annotated[float, Strict(), Field(ge=0.0, le=10.0, allow_inf_nan=False)]
 Flag = Annotated[bool, Strict()]
@@ -131,7 +118,7 @@ class CollisionResponse(BaseModel):
 class CollisionBatchRequest(CollisionOptions):
     """Many configurations (e.g. the waypoints of a trajectory)."""
 
-    configurations: list[list[Finite]] = Field(
+    configurations: list[list[JointValue]] = Field(
         description="N configurations, each one value per joint in joint order (rad, m)."
     )
 
@@ -196,7 +183,6 @@ async def check_collisions(
     """
     robot = await load_robot(reg, robot_id)
     q = body.config(robot)
-    _bounded(q, "q")
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     built = robot.extras.get(f"collision.{body.geometry}") is not None
     heavy = (
@@ -209,9 +195,17 @@ async def check_collisions(
     return ORJSONResponse(_check(robot, q, obstacles, body))
 
 
-def _check_batch(robot: RobotModel, qs: np.ndarray, obstacles: tuple[Obstacle, ...], body) -> dict:
+def _check_batch(
+    robot: RobotModel,
+    qs: np.ndarray,
+    obstacles: tuple[Obstacle, ...],
+    body,
+    cancel: threading.Event | None = None,
+) -> dict:
     cm = collision_model(robot, body.geometry)
-    reports = cm.check_batch(qs, obstacles, margin=body.margin, distances=body.distances)
+    reports = cm.check_batch(
+        qs, obstacles, margin=body.margin, distances=body.distances, cancel=cancel
+    )
     flags = [r.in_collision for r in reports]
     first = next((i for i, f in enumerate(flags) if f), None)
     out = {
@@ -260,8 +254,9 @@ async def check_collisions_batch(
             )
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     qs = np.array(body.configurations, dtype=float)
-    _bounded(qs, "configurations")
-    return ORJSONResponse(await offload(_check_batch, robot, qs, obstacles, body))
+    check_joint_values(qs, "configurations")
+    out = await offload_cancellable(request, _check_batch, robot, qs, obstacles, body)
+    return ORJSONResponse(out)
 
 
 @router.get(

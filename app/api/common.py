@@ -8,6 +8,7 @@ import functools
 import json
 import math
 import os
+import threading
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Annotated, Any, TypeVar
@@ -18,11 +19,12 @@ from fastapi import Path, Request
 from fastapi.exceptions import RequestValidationError
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, Strict, ValidationError
 from starlette.concurrency import run_in_threadpool
+from starlette.exceptions import HTTPException
 from starlette.responses import Response
 
 from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError
-from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.errors import Cancelled, InvalidInputError
+from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
 from app.kinematics.text import SURROGATE_REASON, find_surrogate, has_surrogate
 from app.registry import Registry
 from app.settings import Settings
@@ -33,6 +35,13 @@ Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
 Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+#: A joint value (rad or m) within ±MAX_JOINT_VALUE, the one bound of every configuration
+#: (:data:`app.kinematics.models.MAX_JOINT_VALUE`; fast paths check it with
+#: :func:`~app.kinematics.models.check_joint_values`).
+JointValue = Annotated[Finite, Field(ge=-MAX_JOINT_VALUE, le=MAX_JOINT_VALUE)]
+#: A target coordinate (m) within ±MAX_POSITION.
+Coordinate = Annotated[Finite, Field(ge=-MAX_POSITION, le=MAX_POSITION)]
+Position3 = Annotated[list[Coordinate], Field(min_length=3, max_length=3)]
 
 
 def _valid_text(value: str) -> str:
@@ -60,13 +69,13 @@ class Schema(BaseModel):
 class ConfigurationIn(Schema):
     """A configuration: ``q`` in joint order, or a ``joint_positions`` map (not both)."""
 
-    q: list[Finite] | None = Field(
+    q: list[JointValue] | None = Field(
         None,
         description="One value per actuated joint, in the order of GET /robots/{id} "
         "(rad for revolute and continuous joints, m for prismatic ones).",
         max_length=1024,
     )
-    joint_positions: dict[str, Finite] | None = Field(
+    joint_positions: dict[str, JointValue] | None = Field(
         None,
         description="Joint name → value (rad or m); joints not given take their neutral value.",
         max_length=1024,
@@ -196,6 +205,63 @@ async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
     loop = asyncio.get_running_loop()
     context = contextvars.copy_context()  # the request id follows into the pool's logs
     return await loop.run_in_executor(pool(), context.run, functools.partial(fn, *args, **kwargs))
+
+
+#: How often (s) a request whose work runs in the pool checks that its client is still there.
+DISCONNECT_POLL_S = 0.1
+
+
+#: Status logged for a request whose client went away (nginx's "client closed request").
+CLIENT_CLOSED = 499
+
+
+class ClientDisconnected(HTTPException):
+    """The client of a request went away while its work ran; the work was cancelled.
+
+    An HTTP exception, so the app's handler logs and counts it as a 499 problem answer
+    (which reaches nobody) rather than an internal error.
+    """
+
+    def __init__(self) -> None:
+        super().__init__(CLIENT_CLOSED, "the client closed the request; its work was cancelled")
+
+
+async def offload_cancellable(
+    request: Request, fn: Callable[..., T], *args: Any, **kwargs: Any
+) -> T:
+    """:func:`offload` for long work that gives up when its client disconnects.
+
+    ``fn`` is called with ``cancel=`` a ``threading.Event`` it must check between units of
+    work (and raise :class:`~app.kinematics.errors.Cancelled` once set). While it runs (or
+    waits for a free worker), the request's ASGI channel is polled every
+    :data:`DISCONNECT_POLL_S`; on ``http.disconnect``, or if this coroutine is itself
+    cancelled, the event is set, so an abandoned batch frees its pool worker within one
+    solver iteration instead of running to the end of its budget for nobody.
+
+    Raises :class:`ClientDisconnected` when the work stopped because the client left (the
+    answer would reach no one).
+    """
+    cancel = threading.Event()
+    work = asyncio.ensure_future(offload(fn, *args, cancel=cancel, **kwargs))
+    watcher = asyncio.ensure_future(_watch_disconnect(request, cancel))
+    try:
+        return await work
+    except Cancelled:
+        raise ClientDisconnected() from None
+    except BaseException:
+        cancel.set()  # e.g. this task cancelled at shutdown: stop the worker too
+        raise
+    finally:
+        watcher.cancel()
+
+
+async def _watch_disconnect(request: Request, cancel: threading.Event) -> None:
+    """Set ``cancel`` once the request's client has disconnected."""
+    while not cancel.is_set():
+        if await request.is_disconnected():
+            cancel.set()
+            return
+        await asyncio.sleep(DISCONNECT_POLL_S)
 
 
 def parse_json(raw: bytes) -> Any:

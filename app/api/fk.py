@@ -10,7 +10,7 @@ from pydantic import BaseModel, Field
 
 from app.api.common import (
     ConfigurationIn,
-    Finite,
+    JointValue,
     ORJSONResponse,
     Pose,
     RobotId,
@@ -28,7 +28,7 @@ from app.api.common import (
 from app.api.errors import ERROR_RESPONSES
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
-from app.kinematics.models import RobotModel
+from app.kinematics.models import RobotModel, check_joint_values
 from app.registry import Registry
 from app.settings import Settings
 
@@ -58,7 +58,7 @@ class FKResponse(BaseModel):
 class FKBatchRequest(Schema):
     """Many configurations, one frame."""
 
-    configurations: list[list[Finite]] = Field(
+    configurations: list[list[JointValue]] = Field(
         description="N configurations, each one value per joint in joint order (rad, m).",
     )
     frame: str | None = Field(None, description="Frame to place; default the end effector.")
@@ -160,6 +160,7 @@ def _fk_batch(robot: RobotModel, raw: bytes, limit: int) -> tuple[str, np.ndarra
         raise InvalidInputError(
             f"{qs.shape[0]} configurations exceed the limit of {limit}", "configurations"
         )
+    check_joint_values(qs, "configurations")
     frame = frame or robot.ee_frame
     positions, quats = forward_kinematics_batch(robot, qs, frame)
     return frame, positions, quats

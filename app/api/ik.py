@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 import time
 from typing import Annotated, Any, Literal
 
@@ -14,12 +15,12 @@ from app.api.common import (
     Finite,
     Matrix4,
     ORJSONResponse,
+    Position3,
     Quat,
     RobotId,
     Schema,
-    Vec3,
     load_robot,
-    offload,
+    offload_cancellable,
     registry,
 )
 from app.api.errors import ERROR_RESPONSES
@@ -27,7 +28,12 @@ from app.api.scenes import ObstacleIn, resolve_obstacles, scene_store
 from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.models import (
+    MAX_POSITION,
+    RobotModel,
+    check_bounded,
+    check_joint_value,
+)
 from app.kinematics.rotations import quaternion_to_matrix
 from app.observability import record_ik
 from app.registry import Registry
@@ -53,7 +59,7 @@ MODE_DOC = (
 class Target(Schema):
     """Desired placement of the frame in the root (world) frame."""
 
-    position: Vec3 | None = Field(None, description="[x, y, z] in metres.")
+    position: Position3 | None = Field(None, description="[x, y, z] in metres.")
     orientation: Quat | None = Field(
         None, description="Quaternion [x, y, z, w]; normalised if |q| is within 1e-3 of 1."
     )
@@ -79,10 +85,13 @@ class IKOptions(Schema):
         description="Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); "
         "0 frees a component (not checked against the tolerance).",
     )
+    # Finite, not JointValue: the union's validation errors would be named
+    # seed.list[constrained-float].4; seed_configuration checks the bound, naming seed.4.
     seed: list[Finite] | dict[str, Finite] | None = Field(
         None,
         description="Start configuration: one value per joint (joint order) or joint → value "
-        "(others: middle of their limits). Default: the middle of the joint limits.",
+        "(others: middle of their limits). Default: the middle of the joint limits. Values "
+        "within ±10000 (rad or m), as every configuration.",
     )
     tolerance: Tolerance = Field(default_factory=Tolerance)
     timeout_ms: Positive = Field(
@@ -198,12 +207,15 @@ def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE
             raise InvalidInputError(
                 "the rotation part must be orthonormal with determinant +1", f"{field}.matrix"
             )
+        for i in range(3):  # the translation column: target.matrix.<row>.3
+            check_bounded(M[i, 3], f"{field}.matrix.{i}.3", MAX_POSITION, "m")
         U, _, Vt = np.linalg.svd(R)  # nearest rotation (removes rounding)
         return pin.SE3(U @ Vt, M[:3, 3].copy())
     p = np.zeros(3)
     R = np.eye(3)
     if target.position is not None:
         p = np.array(target.position, dtype=float)
+        check_bounded(p, f"{field}.position", MAX_POSITION, "m")
     elif mode != "orientation":
         raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
     if target.orientation is not None:
@@ -227,7 +239,8 @@ def seed_configuration(robot: RobotModel, seed: Any) -> np.ndarray:
     if isinstance(seed, dict):
         out = robot.mid_range()
         for name, value in seed.items():
-            out[robot.joint_index(name, field=f"seed.{name}")] = value
+            idx = robot.joint_index(name, field=f"seed.{name}")
+            out[idx] = check_joint_value(value, f"seed.{name}")
         return out
     return robot.configuration(seed, field="seed")
 
@@ -280,7 +293,14 @@ def _named(robot: RobotModel, q: np.ndarray) -> dict[str, float]:
     return dict(zip(robot.joint_names, q.tolist(), strict=True))
 
 
-def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict, n: int) -> dict:
+def _solve_one(
+    robot: RobotModel,
+    target: pin.SE3,
+    seed: np.ndarray,
+    opts: dict,
+    n: int,
+    cancel: threading.Event | None = None,
+) -> dict:
     frame = opts["frame"]
     res = ik.solve(
         robot,
@@ -294,6 +314,7 @@ def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict,
         max_iterations=opts["max_iterations"],
         num_solutions=n,
         accept=_accept(robot, opts),
+        cancel=cancel,
     )
     record_ik(res.success)
     return {
@@ -323,8 +344,15 @@ def _solve_one(robot: RobotModel, target: pin.SE3, seed: np.ndarray, opts: dict,
 
 
 def _solve_batch(
-    robot: RobotModel, targets: list[pin.SE3], seed: np.ndarray, opts: dict, chain: bool
+    robot: RobotModel,
+    targets: list[pin.SE3],
+    seed: np.ndarray,
+    opts: dict,
+    chain: bool,
+    cancel: threading.Event | None = None,
 ) -> dict:
+    """Solve ``targets`` in order; ``cancel`` (set when the client left) is checked between
+    targets and inside each solve."""
     t0 = time.perf_counter()
     results = []
     solved = 0
@@ -342,6 +370,7 @@ def _solve_batch(
             timeout_ms=opts["timeout_ms"],
             max_iterations=opts["max_iterations"],
             accept=accept,
+            cancel=cancel,
         )
         record_ik(res.success)
         solved += res.success
@@ -400,7 +429,9 @@ async def solve_ik(
     if body.timeout_ms <= INLINE_BUDGET_MS and opts["collisions"] is None:
         out = _solve_one(robot, target, seed, opts, body.num_solutions)
     else:
-        out = await offload(_solve_one, robot, target, seed, opts, body.num_solutions)
+        out = await offload_cancellable(
+            request, _solve_one, robot, target, seed, opts, body.num_solutions
+        )
     return ORJSONResponse(out)
 
 
@@ -419,13 +450,25 @@ async def solve_ik_batch(
     """IK for many targets of one frame, in order, computed in the work pool.
 
     With `chain_seeds` (default) each target is seeded with the previous solution, which
-    keeps a trajectory on one branch; otherwise every target starts from `seed`.
+    keeps a trajectory on one branch; otherwise every target starts from `seed`. The
+    request's total budget, targets × `timeout_ms`, may not exceed the server's
+    `ik_max_request_s` (default 30 s; else 422 naming `targets`), and the work stops when
+    the client disconnects.
     """
     _budget(request, body.timeout_ms)
     limit = request.app.state.settings.max_batch
     if len(body.targets) > limit:
         raise InvalidInputError(
             f"{len(body.targets)} targets exceed the limit of {limit}", "targets"
+        )
+    total_s = len(body.targets) * body.timeout_ms * 1e-3
+    cap_s = request.app.state.settings.ik_max_request_s
+    if total_s > cap_s:
+        raise InvalidInputError(
+            f"{len(body.targets)} targets × {body.timeout_ms:g} ms = {total_s:g} s exceeds the "
+            f"server's budget of {cap_s:g} s per request: send fewer targets per request, or "
+            "a smaller timeout_ms",
+            "targets",
         )
     robot = await load_robot(reg, robot_id)
     opts = _options(robot, body)
@@ -434,5 +477,7 @@ async def solve_ik_batch(
         target_placement(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)
     ]
     seed = seed_configuration(robot, body.seed)
-    out = await offload(_solve_batch, robot, targets, seed, opts, body.chain_seeds)
+    out = await offload_cancellable(
+        request, _solve_batch, robot, targets, seed, opts, body.chain_seeds
+    )
     return ORJSONResponse(out)

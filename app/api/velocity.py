@@ -12,6 +12,7 @@ from app.api.errors import ERROR_RESPONSES
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.velocity import (
     MAX_DAMPING,
+    MAX_RATE,
     SINGULAR_THRESHOLD,
     forward_velocity,
     inverse_velocity,
@@ -20,9 +21,11 @@ from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
-Twist = Annotated[list[Finite], Field(min_length=6, max_length=6)]
-Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
-NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
+#: A rate (rad/s, m/s) within ±MAX_RATE.
+Rate = Annotated[Finite, Field(ge=-MAX_RATE, le=MAX_RATE)]
+Twist = Annotated[list[Rate], Field(min_length=6, max_length=6)]
+Positive = Annotated[float, Field(gt=0.0, le=MAX_RATE, allow_inf_nan=False, strict=True)]
+NonNegative = Annotated[float, Field(ge=0.0, le=MAX_RATE, allow_inf_nan=False, strict=True)]
 
 
 class VelocityRequest(ConfigurationIn):
@@ -34,7 +37,7 @@ class VelocityRequest(ConfigurationIn):
         description="Axes of the twist: world (origin velocity and angular velocity in world "
         "axes, Pinocchio LOCAL_WORLD_ALIGNED) | local (the frame's own axes, LOCAL).",
     )
-    joint_velocities: list[Finite] | None = Field(
+    joint_velocities: list[Rate] | None = Field(
         None, description="Forward: q̇, one per joint in joint order (rad/s, m/s).", max_length=1024
     )
     twist: Twist | None = Field(

@@ -159,8 +159,11 @@ def into_limits(q: float, lower: float, upper: float, seed: float) -> float:
     """``q`` shifted by a multiple of 2π into [lower, upper] (closest to ``seed``).
 
     Continuous joints (infinite limits) are wrapped to [−π, π). When no shift fits, ``q``
-    wrapped to [−π, π) is returned (and fails the caller's limit check).
+    wrapped to [−π, π) is returned (and fails the caller's limit check). A non-finite ``q``
+    (a closed form on overflowing geometry) is returned as is: FK verification rejects it.
     """
+    if not math.isfinite(q):
+        return q
     if not (math.isfinite(lower) and math.isfinite(upper)):
         return (q + math.pi) % (2.0 * math.pi) - math.pi
     two_pi = 2.0 * math.pi
@@ -555,7 +558,7 @@ def candidates(
     ur, planar = forms
     if ur is None and planar is None:
         return None
-    lo, hi = robot.lower[active], robot.upper[active]
+    lo, hi = ch.lower, ch.upper  # the limits, within ±MAX_JOINT_VALUE
     s = seed[active]
     raw: Iterable[np.ndarray] | None = None
     if ur is not None and mode == "pose" and _compiled_available():

@@ -69,7 +69,7 @@ import coal
 import numpy as np
 import pinocchio as pin
 
-from app.kinematics.errors import InvalidInputError
+from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
@@ -508,12 +508,21 @@ class CollisionModel:
         *,
         margin: float = 0.0,
         distances: bool = False,
+        cancel: threading.Event | None = None,
     ) -> list[CollisionReport]:
-        """:meth:`check` for each row of ``qs`` (N, n); no per-pair distances unless asked."""
-        return [
-            self.check(q, obstacles, margin=margin, distances=distances, pair_distances=False)
-            for q in qs
-        ]
+        """:meth:`check` for each row of ``qs`` (N, n); no per-pair distances unless asked.
+
+        ``cancel``, once set (the caller's client went away), stops the batch before the
+        next row with :class:`~app.kinematics.errors.Cancelled`.
+        """
+        out = []
+        for q in qs:
+            if cancel is not None and cancel.is_set():
+                raise Cancelled()
+            out.append(
+                self.check(q, obstacles, margin=margin, distances=distances, pair_distances=False)
+            )
+        return out
 
 
 def collision_model(robot: RobotModel, mode: str = "mesh") -> CollisionModel:

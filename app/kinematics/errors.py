@@ -43,3 +43,12 @@ class ConflictError(KinematicsError):
 
 class ForbiddenError(KinematicsError):
     """The operation is not allowed on this resource (e.g. deleting a built-in robot)."""
+
+
+class Cancelled(Exception):  # noqa: N818 - an outcome, not a fault of the request
+    """The caller withdrew the work (e.g. its HTTP client disconnected): it stopped early.
+
+    Not a :class:`KinematicsError`: nothing was wrong with the request, and nobody is left to
+    answer. Long computations take an optional ``threading.Event`` (``cancel``) and raise
+    this once it is set.
+    """

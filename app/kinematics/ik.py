@@ -79,6 +79,7 @@ predicate, e.g. collision-free) before it is reported as a success.
 from __future__ import annotations
 
 import math
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -90,8 +91,8 @@ from scipy.linalg.lapack import dposv as _posv
 
 from app.kinematics import analytic_ik, ik_kernel
 from app.kinematics.analytic_ik import candidates
-from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.errors import Cancelled, InvalidInputError
+from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel, check_joint_values
 
 Mode = Literal["pose", "position", "orientation"]
 Status = Literal["converged", "not_converged", "timeout"]
@@ -191,8 +192,11 @@ class Chain:
         self.cont = np.flatnonzero(cont)
         self.cont_q = np.array([j.idx_q for j in joints if j.continuous], dtype=int)
         self.cont_q1 = self.cont_q + 1
-        self.lower = robot.lower[self.active].copy()
-        self.upper = robot.upper[self.active].copy()
+        # Searched within the limits, and within ±MAX_JOINT_VALUE (what every endpoint accepts
+        # back) when a URDF gives wider limits; continuous joints (±inf) are wrapped instead.
+        lo, hi = robot.lower[self.active], robot.upper[self.active]
+        self.lower = np.where(np.isfinite(lo), np.maximum(lo, -MAX_JOINT_VALUE), lo)
+        self.upper = np.where(np.isfinite(hi), np.minimum(hi, MAX_JOINT_VALUE), hi)
         # Restart sampling box: the limits, or one turn for continuous joints.
         self.sample_lo = np.where(np.isfinite(self.lower), self.lower, -math.pi)
         self.sample_hi = np.where(np.isfinite(self.upper), self.upper, math.pi)
@@ -273,6 +277,18 @@ class Chain:
         return _k_smallest(self.sample_distances(target)[0], k)
 
 
+def _frame_jacobian_6xn(
+    model: pin.Model, data: pin.Data, fid: int, rf: pin.ReferenceFrame
+) -> np.ndarray:
+    """``pin.getFrameJacobian`` as a (6, nv) array whatever nv (Pinocchio returns (6,) for 1)."""
+    return pin.getFrameJacobian(model, data, fid, rf).reshape(6, -1)
+
+
+def _never() -> bool:
+    """The ``cancel.is_set`` of a search nobody can cancel."""
+    return False
+
+
 def _k_smallest(d: np.ndarray, k: int) -> np.ndarray:
     """Indices of the k smallest entries of ``d``, in increasing order."""
     k = min(k, d.size)
@@ -306,7 +322,7 @@ def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
     """Position error (m), rotation angle (rad) and e = [p − p_t; log3(R R_tᵀ)] (world axes)."""
     ep = T.translation - target.translation
     eR = pin.log3(T.rotation @ target.rotation.T)
-    return float(math.sqrt(ep @ ep)), float(math.sqrt(eR @ eR)), np.concatenate([ep, eR])
+    return math.hypot(*ep), math.hypot(*eR), np.concatenate([ep, eR])
 
 
 def wrap_angle(x: np.ndarray) -> np.ndarray:
@@ -367,6 +383,7 @@ def solve(
     accept: Callable[[np.ndarray], bool] | None = None,
     analytic: bool = True,
     rng: np.random.Generator | None = None,
+    cancel: threading.Event | None = None,
 ) -> IKResult:
     """Joint configurations placing ``frame`` at ``target``.
 
@@ -401,6 +418,10 @@ def solve(
     rng
         Random generator for restarts (default: a fixed per-chain table of uniform samples,
         so answers are reproducible).
+    cancel
+        Optional event: once set (the caller's client went away), the search stops within
+        one iteration (the Python loop) or one attempt (compiled, ≤ 20 iterations) and
+        :class:`~app.kinematics.errors.Cancelled` is raised.
 
     Returns
     -------
@@ -431,11 +452,17 @@ def solve(
     q_seed = ch.mid_range.copy() if seed is None else np.array(seed, dtype=float)
     if q_seed.shape != (robot.n,):
         raise InvalidInputError(f"expected {robot.n} values", "seed")
+    check_joint_values(q_seed, "seed")
+    if not all(math.isfinite(v) and abs(v) <= MAX_POSITION for v in target.translation):
+        raise InvalidInputError(f"must be finite, within ±{MAX_POSITION:g} m", "target.position")
     rows, sw, check_pos, check_rot = _task(mode, weights)
     deadline = t_start + timeout_ms * 1e-3
+    if cancel is not None and cancel.is_set():
+        raise Cancelled()
     search = _Search(robot, ch, target, q_seed, rows, sw, check_pos, check_rot, tol_p, tol_r)
     search.accept = accept
     search.wanted = num_solutions
+    search.cancel = cancel
 
     method = "numeric"
     if analytic:
@@ -477,6 +504,7 @@ class _Search:
         self.check_pos, self.check_rot = check_pos, check_rot
         self.tol_p, self.tol_r = tol_p, tol_r
         self.accept: Callable[[np.ndarray], bool] | None = None
+        self.cancel: threading.Event | None = None
         self.wanted = 1
         self.solutions: list[IKSolution] = []
         self.iterations = 0
@@ -516,7 +544,8 @@ class _Search:
         dp = T.translation - target.translation
         phi = pin.log3(T.rotation @ target.rotation.T)
         ep2, er2 = float(dp @ dp), float(phi @ phi)
-        ep_full, er_full = math.sqrt(ep2), math.sqrt(er2)
+        # hypot: no overflow of the squares (the errors of huge robots stay numbers)
+        ep_full, er_full = math.hypot(*dp), math.hypot(*phi)
         if self.full_pose:
             ep, er, energy = ep_full, er_full, ep2 + er2
         else:
@@ -525,8 +554,10 @@ class _Search:
             energy = self._energy(e)
         if energy < self.best_energy:
             self.best_energy, self.best_q = energy, q
-        if ep > self.tol_p or er > self.tol_r:
+        if not (ep <= self.tol_p and er <= self.tol_r):
             return False
+        if not (math.isfinite(ep_full) and math.isfinite(er_full)):
+            return False  # a pose that overflows float64 (even on unchecked components)
         for s in self.solutions:
             if joint_distance(robot, s.q, q).max() <= DISTINCT:
                 return False
@@ -574,6 +605,7 @@ class _Search:
         best_q = q_ref.copy()
         have_best = False
         perf = time.perf_counter
+        cancelled = self.cancel.is_set if self.cancel is not None else _never
         attempt = ik_kernel.attempt
         args = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, lo, hi, ch.cont_mask, Rt, pt, q_ref)
         qa = q_ref.copy()
@@ -598,6 +630,8 @@ class _Search:
                 if perf() >= deadline:
                     self.timed_out = True
                     return
+                if cancelled():
+                    raise Cancelled()
                 before = best[0]
                 outcome, n = attempt(
                     qa, *args,
@@ -651,6 +685,10 @@ class _Search:
             pin.log3,
             pin.Jlog3,
         )
+        if model.nv == 1:
+            # Pinocchio hands back a 1-D array (6,) for a model with one degree of freedom
+            # (a 1-DoF arm, or one joint and its mimic followers): keep it a 6×1 matrix.
+            gfj = _frame_jacobian_6xn
         LWA = pin.LOCAL_WORLD_ALIGNED
         posv = _posv
         mu, damp, gain = _MU, _DAMP, _NULL_GAIN
@@ -681,6 +719,7 @@ class _Search:
         use_jlog = 0 < rows_r.size < 3
         nearest_first, nearest_ratio, rot_w = _NEAREST_FIRST, _NEAREST_RATIO, _ROT_WEIGHT
         null_floor = _NULL_FLOOR
+        cancelled = self.cancel.is_set if self.cancel is not None else _never
         try:
             while True:
                 if it >= cap:
@@ -688,6 +727,8 @@ class _Search:
                 if perf() >= deadline:
                     self.timed_out = True
                     return
+                if cancelled():
+                    raise Cancelled()
                 # ---- kinematics at qa
                 if all_plain:
                     qp[plain_q] = qa
@@ -856,6 +897,14 @@ class _Search:
         pin.forwardKinematics(model, data, robot.to_pin(q))
         T = pin.updateFramePlacement(model, data, self.ch.frame_id)
         ep, er, _ = pose_errors(T, self.target)
+        if not (math.isfinite(ep) and math.isfinite(er)):
+            # The pose itself overflows float64 (a robot hundreds of orders of magnitude too
+            # big): there is no error to report, so no answer rather than a null one.
+            raise InvalidInputError(
+                f"frame {self.ch.frame!r} has no finite pose at the configurations searched: "
+                "the robot's dimensions overflow double precision",
+                "robot_id",
+            )
         status: Status = "timeout" if self.timed_out else "not_converged"
         return IKResult(
             False, status, q, ep, er, [], self.iterations, self.restarts, elapsed, method

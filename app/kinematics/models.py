@@ -45,6 +45,49 @@ _FRAME_KIND = {
 }
 
 
+#: Largest |joint value| (rad or m) accepted wherever a configuration enters: FK, batches,
+#: Jacobian, velocity, analysis, statics, collisions, IK seeds. float64 represents |q| ≤ 1e4
+#: to within 1.8e-12 (its spacing there), the precision the service answers to; beyond, the
+#: spacing grows with |q| (at 1e300 it is ~1e284, so sin and cos of the value, and any pose
+#: computed from it, carry no information) and no real joint travels 10 km or 1600 turns.
+MAX_JOINT_VALUE = 1e4
+#: Largest |coordinate| (m) of a target position (IK targets, reachability queries): 1000 km,
+#: where float64's spacing is still 1.2e-10 m; beyond, positions only lose precision.
+MAX_POSITION = 1e6
+
+
+def check_bounded(values: Any, field: str, bound: float, unit: str) -> None:
+    """Raise :class:`InvalidInputError` naming the first non-finite value of ``values``, or
+    the first beyond ±``bound``, as ``field.i`` (1-D) or ``field.i.j`` (2-D)."""
+    arr = np.asarray(values, dtype=float)
+    ok = np.abs(arr) <= bound  # False for NaN too
+    if ok.all():
+        return
+    where = tuple(int(i) for i in np.argwhere(~ok)[0])
+    value = float(arr[where])
+    path = ".".join([field, *map(str, where)])
+    if not math.isfinite(value):
+        raise InvalidInputError("must be a finite number", path)
+    raise InvalidInputError(f"must lie within ±{bound:g} {unit} (got {value:g})", path)
+
+
+def check_joint_values(values: Any, field: str) -> None:
+    """Refuse (:class:`InvalidInputError`, naming ``field.i`` or ``field.i.j``) joint values
+    that are not finite or beyond ±:data:`MAX_JOINT_VALUE` (rad or m)."""
+    check_bounded(values, field, MAX_JOINT_VALUE, "(rad or m)")
+
+
+def check_joint_value(value: float, field: str) -> float:
+    """One joint value (e.g. ``joint_positions.<name>``), checked as :func:`check_joint_values`."""
+    if not math.isfinite(value):
+        raise InvalidInputError("must be a finite number", field)
+    if abs(value) > MAX_JOINT_VALUE:
+        raise InvalidInputError(
+            f"must lie within ±{MAX_JOINT_VALUE:g} (rad or m) (got {value:g})", field
+        )
+    return float(value)
+
+
 @dataclass(frozen=True, slots=True)
 class Joint:
     """One actuated joint, as the URDF describes it.
@@ -297,10 +340,10 @@ class RobotModel:
         return np.clip(np.zeros(self.n), self.lower, self.upper)
 
     def mid_range(self) -> np.ndarray:
-        """Middle of the joint limits (0 for continuous joints)."""
+        """Middle of the joint limits (0 for continuous joints), within ±MAX_JOINT_VALUE."""
         lo = np.where(np.isfinite(self.lower), self.lower, 0.0)
         hi = np.where(np.isfinite(self.upper), self.upper, 0.0)
-        return 0.5 * (lo + hi)
+        return np.clip(0.5 * lo + 0.5 * hi, -MAX_JOINT_VALUE, MAX_JOINT_VALUE)
 
     def to_pin(self, q: np.ndarray) -> np.ndarray:
         """Wire configuration (n,) → Pinocchio configuration (nq,)."""
@@ -340,8 +383,10 @@ class RobotModel:
     ) -> np.ndarray:
         """A validated wire configuration from a list or a name → value map.
 
-        Joints missing from ``joint_positions`` take their neutral value. Giving both forms
-        or a list of the wrong length raises :class:`InvalidInputError`.
+        Joints missing from ``joint_positions`` take their neutral value. Giving both forms,
+        a list of the wrong length, or a value that is not finite or beyond
+        ±:data:`MAX_JOINT_VALUE` raises :class:`InvalidInputError` naming the value
+        (``q.3``, ``joint_positions.<name>``).
         """
         if q is not None and joint_positions is not None:
             raise InvalidInputError(f"give either {field} or {map_field}, not both", field)
@@ -349,9 +394,7 @@ class RobotModel:
             out = self.neutral()
             for name, value in (joint_positions or {}).items():
                 idx = self.joint_index(name, field=f"{map_field}.{name}")
-                if not math.isfinite(value):
-                    raise InvalidInputError("must be a finite number", f"{map_field}.{name}")
-                out[idx] = value
+                out[idx] = check_joint_value(value, f"{map_field}.{name}")
             return out
         arr = np.asarray(q, dtype=float)
         if arr.ndim != 1 or arr.shape[0] != self.n:
@@ -360,9 +403,7 @@ class RobotModel:
                 f"got {arr.shape[0] if arr.ndim == 1 else arr.shape}",
                 field,
             )
-        bad = np.flatnonzero(~np.isfinite(arr))
-        if bad.size:
-            raise InvalidInputError("must be a finite number", f"{field}.{int(bad[0])}")
+        check_joint_values(arr, field)
         return arr
 
     def limit_violations(self, q: np.ndarray, tol: float = 1e-12) -> list[str]:

@@ -334,7 +334,8 @@ class PinocchioChain:
             Ji = pin.computeFrameJacobian(model, data, qp[i], self.fid, pin.LOCAL_WORLD_ALIGNED)
             M = data.oMf[self.fid]
             R[i], p[i] = M.rotation, M.translation
-            J[i] = Ji[:, robot.v_index[self.wire]]
+            # (6,) from Pinocchio when nv == 1 (one joint and its mimic followers)
+            J[i] = Ji.reshape(6, -1)[:, robot.v_index[self.wire]]
         return R, p, J
 
     def evaluate(self, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

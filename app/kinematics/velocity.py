@@ -32,6 +32,10 @@ from app.kinematics.models import RobotModel
 SINGULAR_THRESHOLD = 1e-2
 #: Damping at an exact singularity, λ_max.
 MAX_DAMPING = 1e-1
+#: Largest |joint velocity| (rad/s, m/s) and |twist component| (m/s, rad/s) accepted, and
+#: largest threshold and damping: far above any machine, and far enough below float64's
+#: range (1.8e308) that J·q̇, J⁺·t and their residuals cannot overflow to ±inf or NaN.
+MAX_RATE = 1e6
 
 
 @dataclass(slots=True)
