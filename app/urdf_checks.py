@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from xml.etree.ElementTree import Element
 
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.models import MAX_JOINT_VALUE
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
 #: Joint types a URDF upload may use (the wire has one value per actuated joint).
@@ -181,6 +182,15 @@ def _check_joint(joint: Element, name: str, jtype: str, field: str) -> None:
         if lower > upper:
             raise InvalidInputError(
                 f"joint {name!r}: <limit> lower ({lower!r}) > upper ({upper!r})", field
+            )
+        # Every configuration the service takes lies within ±MAX_JOINT_VALUE: a joint whose
+        # range reaches beyond it would have configurations (even its neutral one) that
+        # FK, IK and the analyses refuse.
+        if max(abs(lower), abs(upper)) > MAX_JOINT_VALUE:
+            raise InvalidInputError(
+                f"joint {name!r}: <limit> lower/upper must lie within ±{MAX_JOINT_VALUE:g} "
+                f"(rad or m), got [{lower!r}, {upper!r}]",
+                field,
             )
 
 

@@ -295,6 +295,19 @@ def test_mesh_loading_errors_leak_no_host_or_source_path(client) -> None:
         assert "passwd" not in coll.text and "root:" not in coll.text
 
 
+@pytest.mark.parametrize(
+    "limit", ['lower="2e4" upper="3e4"', 'lower="-1" upper="10000.5"', 'lower="-2e5" upper="0"']
+)
+def test_joint_limits_beyond_the_joint_value_bound_are_422(client, limit) -> None:
+    """A range beyond ±1e4 would have configurations (its neutral one) FK refuses."""
+    doc = urdf_doc(limit=limit)
+    body = problem(client.post("/robots/urdf", json={"name": "wide", "urdf": doc}), 422, "urdf")
+    assert "'j1'" in body["detail"] and "limit" in body["detail"]
+    assert user_ids(client) == []
+    ok = urdf_doc(limit='lower="-10000" upper="10000"')
+    assert client.post("/robots/urdf", json={"name": "edge", "urdf": ok}).status_code == 201
+
+
 # ------------------------------------------------------------------ 4. axes
 @pytest.mark.parametrize("axis", ["1e-320 0 0", "0 0 1e-7", "0 0 0", "-0 0 -0"])
 def test_axis_of_tiny_norm_is_422_naming_the_joint(client, axis) -> None:
