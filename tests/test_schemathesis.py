@@ -15,14 +15,21 @@ the schema marks with the bearer ``security`` requirement) are fuzzed on an app 
 ``DENAVIT_API_TOKEN`` set, schemathesis sending the token: without one the service is open
 by design, so it would ignore the declared requirement. There ``ignored_auth`` replays
 requests without the token and with a wrong one, which must not succeed.
+
+A stateful test follows the links schemathesis infers (create a scene or robot, then read,
+use and delete it) and adds the checks that need such sequences: ``use_after_free`` (a
+deleted resource answers 404) and ``ensure_resource_availability`` (a created one is
+there).
 """
 
 from __future__ import annotations
 
 import tempfile
 from pathlib import Path
+from typing import Any
 
 import schemathesis
+from fastapi.testclient import TestClient
 from hypothesis import HealthCheck, settings
 from schemathesis.checks import (
     CHECKS,
@@ -77,27 +84,25 @@ CHECKS_NOT_USED = {
     # Wall-clock limits fail on a busy CI machine (project rule: no wall-clock budgets);
     # latency is measured by `make bench` instead.
     max_response_time: "wall-clock budget",
-    # These compare a response with an earlier one of the same stateful sequence (a DELETE
-    # then a GET of the same resource; a POST that created it then a GET). Per-operation
-    # fuzzing has no such sequence, so they never fire here; tests/api/test_scenes.py and
-    # tests/api/test_robot_upload.py test create → read → delete → 404 directly.
-    use_after_free: "needs stateful sequences",
-    ensure_resource_availability: "needs stateful sequences",
     # Needs two principals (user A's resource read with user B's credentials): the service
     # has one shared token and no per-user resources.
     object_level_authorization: "single principal",
 }
 
+#: Checks that compare a response with an earlier one of the same sequence (a DELETE then a
+#: GET of the same resource; a POST that created it then a GET): run by the stateful test.
+STATEFUL_CHECKS = [use_after_free, ensure_resource_availability]
+
 POSITIVE_STATUSES = ["2xx", "401", "403", "404", "409", "422"]
 
 
-def _config(**extra: object) -> SchemathesisConfig:
+def _config(**extra: Any) -> SchemathesisConfig:
     """Deterministic generation; every ``robot_id`` is the built-in 2-DoF DH arm ``planar2``,
     so generated bodies reach the kinematics (a random id only ever gets a 404), and a
     two-value ``q`` is short enough for the generator to hit often."""
     return SchemathesisConfig.from_dict(
         {
-            "generation": {"deterministic": True},
+            "generation": {"deterministic": True, **extra.pop("generation", {})},
             "checks": {"positive_data_acceptance": {"expected-statuses": POSITIVE_STATUSES}},
             "parameters": {"robot_id": "planar2"},
             **extra,
@@ -126,6 +131,17 @@ guarded_schema = schemathesis.openapi.from_asgi(
     config=_config(auth={"openapi": {BEARER: {"bearer": TOKEN}}}),
 ).include(operation_id=[op for op in GUARDED if op not in EXCLUDED])
 
+#: Stateful: sequences along the links schemathesis infers from the schema (POST /scenes →
+#: GET/DELETE /scenes/{name}, POST /robots/dh → GET/DELETE /robots/{robot_id} and the
+#: computations on the new robot...), valid data only (invalid data is the job of the
+#: per-operation tests), on the guarded app.
+STATEFUL_APP = _app(api_token=TOKEN)
+stateful_schema = schemathesis.openapi.from_asgi(
+    "/openapi.json",
+    STATEFUL_APP,
+    config=_config(auth={"openapi": {BEARER: {"bearer": TOKEN}}}, generation={"mode": "positive"}),
+).exclude(operation_id=list(EXCLUDED))
+
 FUZZ = settings(
     max_examples=MAX_EXAMPLES,
     deadline=None,
@@ -147,6 +163,33 @@ def test_write_operations_conform_to_their_schema_with_a_token(case) -> None:
     case.call_and_validate(checks=CHECKS_USED)
 
 
+class Workflows(stateful_schema.as_state_machine()):  # type: ignore[misc]
+    """Each example starts from the same state: what one created is deleted after it (else
+    a later example's POST answers 409 and hypothesis sees a different sequence on replay)."""
+
+    def teardown(self) -> None:
+        client = TestClient(STATEFUL_APP)
+        auth = {"Authorization": f"Bearer {TOKEN}"}
+        for robot in client.get("/robots").json()["robots"]:
+            if robot["source"] != "example-robot-data":
+                client.delete(f"/robots/{robot['id']}", headers=auth)  # 403: built in
+        for scene in client.get("/scenes").json()["scenes"]:
+            assert client.delete(f"/scenes/{scene['name']}", headers=auth).status_code == 204
+        super().teardown()
+
+    def validate_response(self, response, case, additional_checks=None, **kwargs) -> None:
+        case.validate_response(
+            response,
+            checks=[*CHECKS_USED, *STATEFUL_CHECKS],
+            transport_kwargs=kwargs or None,
+            recorder=self.recorder,
+        )
+
+
+def test_stateful_workflows_conform_to_the_schema() -> None:
+    Workflows.run(settings=settings(FUZZ, max_examples=30, stateful_step_count=6))
+
+
 def test_exclusions_name_real_operations() -> None:
     assert GUARDED
     ops = {
@@ -161,7 +204,7 @@ def test_exclusions_name_real_operations() -> None:
 def test_every_schemathesis_check_is_used_or_explained() -> None:
     """A check added by a schemathesis upgrade is noticed, not silently left out."""
     available = {check.__name__ for check in CHECKS.get_all()}
-    used = {check.__name__ for check in CHECKS_USED}
+    used = {check.__name__ for check in [*CHECKS_USED, *STATEFUL_CHECKS]}
     explained = {check.__name__ for check in CHECKS_NOT_USED}
     assert not used & explained
     assert available <= used | explained, available - (used | explained)
