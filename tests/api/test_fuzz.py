@@ -297,3 +297,14 @@ def test_every_hostile_token_as_the_body_and_as_each_field(api, endpoint: str) -
             wrong.append(problem(api, "ur5", endpoint, encode(doc)))
     wrong = [w for w in wrong if w]
     assert not wrong, "\n".join(wrong)
+
+
+@pytest.mark.parametrize("name", ["--", "a--b", "x-"])
+def test_dh_import_accepts_every_valid_id(api, name: str) -> None:
+    """Found by schemathesis: ids with ``--`` (valid: ``[a-z0-9_-]{1,64}``) were a 500 (the
+    URDF's provenance comment may not hold ``--``)."""
+    r = api.post("/robots/dh", json={**ONE_DOF, "name": name})
+    assert r.status_code == 201, r.text
+    urdf = api.get(f"/robots/{name}/urdf")
+    assert urdf.status_code == 200 and f'name="{name}"' in urdf.text
+    assert api.delete(f"/robots/{name}").status_code == 204
