@@ -11,7 +11,11 @@ operation, whichever router defined it:
   422 (any operation with parameters or a body), 400 (malformed body) and 413 (body over
   ``DENAVIT_MAX_BODY_BYTES``) for operations with a body, 404 for operations with path
   parameters (unknown robot, scene, map...), 401 and 403 for write operations guarded by
-  :func:`app.api.security.require_token`.
+  :func:`app.api.security.require_token`;
+- the bearer scheme is declared (``components.securitySchemes.bearerAuth``, HTTP bearer)
+  and exactly those guarded operations carry ``security: [{bearerAuth: []}]``, so generated
+  clients send the token there (the guard is enforced only when ``DENAVIT_API_TOKEN`` is
+  set; reads and computations stay open and declare no security).
 
 Schemathesis (tests/test_schemathesis.py) checks the responses against this schema.
 """
@@ -31,6 +35,15 @@ from app.api.security import require_token
 
 PROBLEM = "application/problem+json"
 _REF = "#/components/schemas/"
+#: Name of the bearer scheme in ``components.securitySchemes``.
+BEARER = "bearerAuth"
+BEARER_SCHEME = {
+    "type": "http",
+    "scheme": "bearer",
+    "description": "`Authorization: Bearer <token>` on write endpoints (robot import, "
+    "upload and deletion, scenes, reachability builds). Enforced only when the service "
+    "runs with DENAVIT_API_TOKEN set: 401 without a token, 403 with a wrong one.",
+}
 
 GENERIC_ERRORS = {
     "400": "Malformed request body (not valid JSON or YAML).",
@@ -86,6 +99,7 @@ def document_errors(
                 wanted.add("404")
             if op.get("operationId") in guarded:
                 wanted |= {"401", "403"}
+                op["security"] = [{BEARER: []}]
             for code in sorted(wanted):
                 responses.setdefault(code, {"description": GENERIC_ERRORS[code]})
             for code, response in responses.items():
@@ -100,12 +114,16 @@ def document_errors(
                 response["content"] = {PROBLEM: {"schema": body}}
                 if response.get("description") == "Validation Error":
                     response["description"] = GENERIC_ERRORS["422"]
-    components = schema.setdefault("components", {}).setdefault("schemas", {})
+    schema.setdefault("components", {}).setdefault("securitySchemes", {})[BEARER] = BEARER_SCHEME
+    components = schema["components"].setdefault("schemas", {})
     # Problem, and the request models of routes that decode their own bodies (their
     # openapi_extra refers to them by name).
-    for model in (Problem, *extra_models):
+    for name, body in _model_schemas(Problem).items():
+        components.setdefault(name, body)
+    for model in extra_models:
         for name, body in _model_schemas(model).items():
-            components.setdefault(name, body)
+            if components.setdefault(name, body) != body:
+                raise RuntimeError(f"two different request schemas are named {name!r}")
     text = repr(schema.get("paths"))
     for name in ("HTTPValidationError", "ValidationError"):
         if _REF + name not in text:

@@ -23,6 +23,7 @@ from app.api.common import (
     ORJSONResponse,
     RobotId,
     Schema,
+    body_schema,
     finite_matrix,
     load_robot,
     offload,
@@ -32,7 +33,6 @@ from app.api.common import (
 )
 from app.api.errors import ERROR_RESPONSES
 from app.api.jacobian import REFERENCE_DOC
-from app.api.reachability import inline_body_schema
 from app.kinematics.analysis import (
     DEFAULT_RELATIVE_TOLERANCE,
     Part,
@@ -246,7 +246,7 @@ def _batch_body(raw: bytes, n_joints: int) -> tuple[ManipulabilityBatchRequest, 
     operation_id="compute_manipulability_batch",
     response_model=ManipulabilityBatchResponse,
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
-    openapi_extra=inline_body_schema(ManipulabilityBatchRequest),
+    openapi_extra=body_schema(ManipulabilityBatchRequest),
 )
 async def compute_manipulability_batch(
     robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]

@@ -20,6 +20,7 @@ from app.api.common import (
     ORJSONResponse,
     RobotId,
     Schema,
+    Vec3Out,
     load_robot,
     offload,
     offload_cancellable,
@@ -87,10 +88,10 @@ class PairOut(BaseModel):
         description="Distance (m); negative = penetration depth where coal computes it "
         "(convex hulls, primitives); 0 for penetrating meshes."
     )
-    point_a: list[float] | None = Field(
+    point_a: Vec3Out | None = Field(
         None, description="Witness point on a, root frame (m); with distances."
     )
-    point_b: list[float] | None = Field(
+    point_b: Vec3Out | None = Field(
         None, description="Witness point on b, root frame (m); with distances."
     )
 

@@ -35,6 +35,12 @@ Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
 Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
 Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+# Response twins of the above (plain floats: the service's own output). Same fixed lengths
+# as the request types, so a generated client can pass an answer's pose back in a request.
+Vec3Out = Annotated[list[float], Field(min_length=3, max_length=3)]
+QuatOut = Annotated[list[float], Field(min_length=4, max_length=4)]
+Vec4Out = Annotated[list[float], Field(min_length=4, max_length=4)]
+Matrix4Out = Annotated[list[Vec4Out], Field(min_length=4, max_length=4)]
 #: A joint value (rad or m) within ±MAX_JOINT_VALUE, the one bound of every configuration
 #: (:data:`app.kinematics.models.MAX_JOINT_VALUE`; fast paths check it with
 #: :func:`~app.kinematics.models.check_joint_values`).
@@ -53,6 +59,7 @@ def _valid_text(value: str) -> str:
 #: A string of valid Unicode: every text field that is stored or echoed uses it (a lone
 #: UTF-16 surrogate, ``"\ud800"`` in JSON, cannot be encoded in a response or a file).
 Text = Annotated[str, AfterValidator(_valid_text)]
+
 
 T = TypeVar("T")
 S = TypeVar("S", bound=BaseModel)
@@ -89,12 +96,10 @@ class ConfigurationIn(Schema):
 class Pose(BaseModel):
     """A frame's placement in the robot's root (world) frame."""
 
-    position: list[float] = Field(description="[x, y, z] in metres.")
-    orientation: list[float] = Field(description="Unit quaternion [x, y, z, w], w ≥ 0.")
-    rpy: list[float] = Field(
-        description="[roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll)."
-    )
-    matrix: list[list[float]] = Field(description="4×4 homogeneous transform (metres).")
+    position: Vec3Out = Field(description="[x, y, z] in metres.")
+    orientation: QuatOut = Field(description="Unit quaternion [x, y, z, w], w ≥ 0.")
+    rpy: Vec3Out = Field(description="[roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll).")
+    matrix: Matrix4Out = Field(description="4×4 homogeneous transform (metres).")
 
 
 def pose_json(T: np.ndarray) -> dict[str, Any]:

@@ -13,8 +13,10 @@ from app.api.common import (
     JointValue,
     ORJSONResponse,
     Pose,
+    QuatOut,
     RobotId,
     Schema,
+    Vec3Out,
     app_settings,
     body_schema,
     finite_matrix,
@@ -69,8 +71,8 @@ class FKBatchResponse(BaseModel):
 
     robot_id: str
     frame: str
-    positions: list[list[float]] = Field(description="N×3 positions (m) in the root frame.")
-    orientations: list[list[float]] = Field(description="N×4 quaternions [x, y, z, w].")
+    positions: list[Vec3Out] = Field(description="N×3 positions (m) in the root frame.")
+    orientations: list[QuatOut] = Field(description="N×4 quaternions [x, y, z, w].")
 
 
 @router.post(

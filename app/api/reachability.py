@@ -39,6 +39,7 @@ from app.api.common import (
     RobotId,
     Schema,
     Vec3,
+    body_schema,
     finite_matrix,
     load_robot,
     offload,
@@ -73,30 +74,6 @@ MapId = Annotated[
 ERRORS = {k: ERROR_RESPONSES[k] for k in (400, 404, 422)}
 
 _STATE_LOCK = threading.Lock()
-
-
-def inline_body_schema(model: type[BaseModel]) -> dict:
-    """``openapi_extra`` for a route that decodes its own body: the model's JSON schema with
-    its ``$defs`` substituted in place, so the document needs no extra components."""
-    schema = model.model_json_schema()
-    defs = schema.pop("$defs", {})
-
-    def inline(node):
-        if isinstance(node, dict):
-            ref = node.get("$ref", "")
-            if ref.startswith("#/$defs/"):
-                return inline(defs[ref.removeprefix("#/$defs/")])
-            return {k: inline(v) for k, v in node.items()}
-        if isinstance(node, list):
-            return [inline(v) for v in node]
-        return node
-
-    return {
-        "requestBody": {
-            "required": True,
-            "content": {"application/json": {"schema": inline(schema)}},
-        }
-    }
 
 
 def _state(request: Request) -> tuple[MapStore, BuildJobs]:
@@ -470,7 +447,7 @@ def _check_query(
     operation_id="query_reachability",
     response_model=QueryResponse,
     responses={**ERRORS, 409: {"description": "The map belongs to an older robot model."}},
-    openapi_extra=inline_body_schema(QueryRequest),
+    openapi_extra=body_schema(QueryRequest),
 )
 async def query_reachability(
     robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]

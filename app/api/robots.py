@@ -22,6 +22,8 @@ from app.api.common import (
     RobotId,
     Schema,
     Text,
+    Vec3Out,
+    body_schema,
     offload,
     parse_json,
     registry,
@@ -74,7 +76,7 @@ class JointOut(BaseModel):
     type: str = Field(description="revolute | prismatic | continuous.")
     parent: str = Field(description="Parent link.")
     child: str = Field(description="Child link.")
-    axis: list[float] = Field(description="Joint axis in the joint frame (URDF <axis>).")
+    axis: Vec3Out = Field(description="Joint axis in the joint frame (URDF <axis>).")
     limits: JointLimits
     continuous: bool = Field(description="Unbounded revolute joint (one angle on the wire).")
 
@@ -332,12 +334,7 @@ async def import_dh_robot(
     response_model=RobotDetail,
     dependencies=[Depends(require_token)],
     responses=_WRITE_ERRORS,
-    openapi_extra={
-        "requestBody": {
-            "required": True,
-            "content": {"application/json": {"schema": UrdfUpload.model_json_schema()}},
-        }
-    },
+    openapi_extra=body_schema(UrdfUpload),
 )
 async def upload_urdf_robot(
     request: Request, reg: Annotated[Registry, Depends(registry)]

@@ -14,7 +14,7 @@ from fastapi import APIRouter, Depends, Path, Request
 from pydantic import BaseModel, Field, Strict
 from starlette.responses import Response
 
-from app.api.common import ORJSONResponse, Quat, Schema, Text, Vec3
+from app.api.common import ORJSONResponse, Quat, Schema, Text, Vec3, Vec3Out
 from app.api.errors import ERROR_RESPONSES
 from app.api.security import require_token
 from app.kinematics.errors import InvalidInputError
@@ -65,7 +65,7 @@ class ObstacleOut(BaseModel):
 
     name: str
     shape: str
-    size: list[float] | None = None
+    size: Vec3Out | None = None
     radius: float | None = None
     length: float | None = None
     pose: ObstaclePose

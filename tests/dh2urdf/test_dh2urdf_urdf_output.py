@@ -304,3 +304,15 @@ def test_reference_frames_exist_in_pinocchio() -> None:
     model = pin.buildModelFromXML(to_urdf(table))
     for name in [*frame_names(table.dof), "world", "link_1", "link_2", "link_3"]:
         assert model.existFrame(name), name
+
+
+@pytest.mark.parametrize("name", ["--", "a--b", "a-", "-", "---", "x_-"])
+def test_any_valid_robot_name_gives_a_well_formed_document(name: str) -> None:
+    """XML comments may not hold ``--`` nor end with ``-``: the provenance comment must still
+    be well formed for every name the table accepts (lxml refused these with ValueError)."""
+    text = to_urdf(DHTable.from_dict({**doc(), "name": name}))
+    root = parse(text)
+    assert root.get("name") == name
+    comment = text.split("\n", 3)[2].strip()
+    assert comment.startswith("<!--") and comment.endswith("-->")
+    assert "--" not in comment[4:-3] and not comment[4:-3].endswith("-")
