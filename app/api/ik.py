@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from typing import Annotated, Any, Literal
@@ -220,7 +221,7 @@ def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE
         raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
     if target.orientation is not None:
         qv = np.array(target.orientation, dtype=float)
-        norm = float(np.linalg.norm(qv))
+        norm = math.hypot(*target.orientation)  # no overflow warning for huge components
         if not abs(norm - 1.0) <= QUAT_NORM_TOL:
             raise InvalidInputError(
                 f"must be a unit quaternion [x, y, z, w] (norm {norm:.6g})",
