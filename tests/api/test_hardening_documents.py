@@ -395,10 +395,10 @@ def test_killer_document_gets_a_quick_4xx_on_a_live_two_worker_server(tmp_path) 
         assert elapsed < 60
         # The other worker killer: 512 movable joints (the old maximum), whose per-thread
         # Data (~4.5 GB) the first FK would have built. Refused before any model exists.
-        long = http.post(url + "/robots/urdf", json={"name": "long", "urdf": chain(512)})
-        assert long.status_code == 422, long.text[:500]
-        assert long.json()["field"] == "urdf"
-        assert "DENAVIT_MAX_ROBOT_DOF" in long.json()["detail"]
+        for n, limit in ((512, "DENAVIT_MAX_URDF_JOINTS"), (200, "DENAVIT_MAX_ROBOT_DOF")):
+            long = http.post(url + "/robots/urdf", json={"name": "long", "urdf": chain(n)})
+            assert long.status_code == 422, long.text[:500]
+            assert long.json()["field"] == "urdf" and limit in long.json()["detail"]
         # Both workers stay healthy and serve writes and reads.
         for _ in range(6):
             assert http.get(url + "/health").status_code == 200
