@@ -67,22 +67,24 @@ def send_and_hang_up(url: str, path: str, body: dict) -> None:
 def test_abandoned_batches_do_not_starve_the_pool(tmp_path: Path, registry: Registry) -> None:
     """More abandoned batches than the pool workers of both server processes (one per core
     each); afterwards other clients' batches are answered long before the abandoned ones
-    would have finished (half their budget: a wide margin, not a tight clock)."""
+    would have finished (three quarters of their budget: a wide margin, not a tight clock)."""
     slots = 2 * (os.cpu_count() or 2)
     good = reachable_batch(registry)
     with serve(tmp_path / "data", "--workers", "2") as url:
-        with httpx.Client(base_url=url, timeout=60) as c:  # warm both workers' IK chains
-            for _ in range(4):
+        for _ in range(8):  # new connections, so that both workers set up their IK chains
+            with httpx.Client(base_url=url, timeout=60) as c:
                 assert c.post("/robots/panda/ik/batch", json=good).status_code == 200
         for _ in range(slots + 2):
             send_and_hang_up(url, "/robots/panda/ik/batch", ABANDONED)
+        # Without cancellation a pool worker frees up only after a whole abandoned batch
+        # (BUDGET_S); three quarters of it is a wide margin for a loaded machine.
         t0 = time.monotonic()
         for _ in range(4):  # new connections: whichever worker takes them
-            with httpx.Client(base_url=url, timeout=BUDGET_S / 2) as c:
+            with httpx.Client(base_url=url, timeout=0.75 * BUDGET_S) as c:
                 r = c.post("/robots/panda/ik/batch", json=good)
             assert r.status_code == 200, r.text
             assert r.json()["solved"] == 2
-        assert time.monotonic() - t0 < BUDGET_S / 2
+        assert time.monotonic() - t0 < 0.75 * BUDGET_S
 
 
 def test_total_budget_is_bounded(tmp_path: Path) -> None:
