@@ -284,17 +284,10 @@ class Metrics:
         self._file.values[self._in_flight] += 1.0
 
     def finish(self, method: str, route: str, status: int, seconds: float) -> None:
-        """A request leaves flight: :meth:`observe` it (inlined: once per request)."""
+        """A request leaves flight: one less in flight, and :meth:`observe` it."""
         with self._lock:
-            stats = self._routes.get((method, route)) or self._route_stats(method, route)
-            i = stats.statuses.get(status)
-            if i is None:
-                i = stats.statuses[status] = self._file.slot(_status_key(method, route, status))
-            values = self._file.values
-            values[self._in_flight] -= 1.0
-            values[i] += 1.0
-            values[stats.base + bisect_left(LATENCY_BUCKETS, seconds)] += 1.0
-            values[stats.base + _NB] += seconds
+            self._file.values[self._in_flight] -= 1.0
+            self._observe(method, route, status, seconds)
 
     def observe(self, method: str, route: str, status: int, seconds: float) -> None:
         """Count one request of ``route`` (a path template) that took ``seconds``."""
@@ -529,26 +522,17 @@ class ObservabilityMiddleware:
         metrics.enter()
         failed = True
         try:
+            # Exceptions reach this far only once a response has started (app.guard answers
+            # every other one): the server closes the connection; REQUEST_ID stays set for
+            # its log line.
             await self.app(scope, receive, send_with_id)
-        except Exception:
-            # Answer the 500 here, so it carries the request id; the exception goes on to
-            # the server-error handler (which logs it, with the id: REQUEST_ID stays set).
-            if not status:
-                from app.api.errors import problem  # here: `python -m app healthcheck` stays light
-
-                await problem(500, "internal error", instance=scope["path"])(
-                    scope, receive, send_with_id
-                )
-            raise
-        else:
             failed = False
         finally:
+            route = getattr(scope.get("route"), "path", None) or "unmatched"
             if elapsed is None:  # no complete response was sent
                 elapsed = time.perf_counter() - start
-                route = getattr(scope.get("route"), "path", None) or "unmatched"
                 metrics.finish(method, route, status, elapsed)
             if self.access_log and _access.isEnabledFor(logging.INFO):
-                template = getattr(scope.get("route"), "path", None) or "unmatched"
                 access_line(
                     method,
                     scope["path"],
@@ -556,7 +540,7 @@ class ObservabilityMiddleware:
                     {
                         "method": method,
                         "path": scope["path"],
-                        "route": template,
+                        "route": route,
                         "status": status,
                         "duration_ms": round(elapsed * 1000.0, 3),
                     },

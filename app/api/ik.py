@@ -215,8 +215,7 @@ def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE
     p = np.zeros(3)
     R = np.eye(3)
     if target.position is not None:
-        p = np.array(target.position, dtype=float)
-        check_bounded(p, f"{field}.position", MAX_POSITION, "m")
+        p = np.array(target.position, dtype=float)  # bounded by Position3
     elif mode != "orientation":
         raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
     if target.orientation is not None:
