@@ -41,6 +41,7 @@ from app.kinematics.errors import (
 )
 from app.kinematics.models import RobotModel, RobotSummary
 from app.kinematics.text import check_text
+from app.kinematics.xmldoc import parse_literal_xml
 from app.store import (
     SRDF_FILE,
     TABLE_FILE,
@@ -55,7 +56,6 @@ from app.urdf_checks import (
     check_resource_uri,
     check_srdf_document,
     check_urdf_document,
-    parse_untrusted_xml,
 )
 from dh2urdf import DHError, DHTable, to_urdf
 
@@ -67,7 +67,6 @@ __all__ = [
     "check_srdf_document",
     "check_urdf_document",
     "parse_dh_document",
-    "parse_untrusted_xml",
 ]
 
 log = logging.getLogger("denavit.registry")
@@ -474,7 +473,7 @@ class Registry:
             if urdf is None:  # deleted by another process since the listing
                 raise UnknownNameError("robot", stored.id, "robot_id", self.ids())
             srdf = stored.read_text(SRDF_FILE)
-            root = parse_untrusted_xml(urdf, "urdf", self.limits.xml)
+            root = parse_literal_xml(urdf, "urdf", self.limits.xml)
             check_urdf_document(root, "urdf", self.limits)
             if srdf is not None:
                 links = {link.get("name", "") for link in root.findall("link")}
@@ -623,7 +622,7 @@ class Registry:
         check_text(description, "description")
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
-        root = parse_untrusted_xml(urdf, "urdf", self.limits.xml)
+        root = parse_literal_xml(urdf, "urdf", self.limits.xml)
         check_urdf_document(root, "urdf", self.limits)
         if srdf is not None:
             check_srdf_document(

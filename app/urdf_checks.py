@@ -81,15 +81,6 @@ class UrdfLimits:
     max_dof: int = 64
 
 
-def parse_untrusted_xml(text: str, field: str, limits: XmlLimits | None = None) -> Element:
-    """Parse XML from a client: no DTD or entities, bounded, literal (namespace-unaware) names.
-
-    Raises :class:`InvalidInputError` naming ``field`` for anything that is not plain,
-    well-formed XML within ``limits``.
-    """
-    return parse_literal_xml(text, field, limits)
-
-
 def check_resource_uri(uri: str) -> str | None:
     """Why a mesh/texture ``filename`` is refused, or ``None`` when it is allowed.
 
@@ -205,8 +196,8 @@ def check_urdf_document(
     least :data:`MIN_AXIS_NORM`, at least one actuated joint, at most ``limits.max_joints``
     joints and ``limits.max_dof`` movable ones, and safe ``<mesh>``/``<texture>``
     ``filename`` URIs (see :func:`check_resource_uri`; other ``filename`` attributes, e.g.
-    Gazebo plugins, are never opened). ``root`` must come from :func:`parse_untrusted_xml`
-    (literal names).
+    Gazebo plugins, are never opened). ``root`` must come from
+    :func:`~app.kinematics.xmldoc.parse_literal_xml` (literal names).
     """
     limits = limits or UrdfLimits()
     if root.tag != "robot":
@@ -303,7 +294,7 @@ def check_srdf_document(
     text: str, links: set[str], field: str = "srdf", limits: XmlLimits | None = None
 ) -> None:
     """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs."""
-    root = parse_untrusted_xml(text, field, limits)
+    root = parse_literal_xml(text, field, limits)
     if root.tag != "robot":
         raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
     for pair in root.iter("disable_collisions"):
