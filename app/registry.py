@@ -459,6 +459,17 @@ class Registry:
             self._user_models = {**self._user_models, robot_id: (stored.revision, robot)}
         return robot
 
+    def check_documents(self, urdf: str, srdf: str | None) -> None:
+        """The upload checks of a URDF (and its SRDF) within :attr:`limits`: parsed with
+        literal names as Pinocchio reads them, no DTD or entities, bounded work
+        (:func:`check_urdf_document`, :func:`check_srdf_document`); raises
+        :class:`InvalidInputError` naming ``urdf`` or ``srdf``."""
+        root = parse_literal_xml(urdf, "urdf", self.limits.xml)
+        check_urdf_document(root, "urdf", self.limits)
+        if srdf is not None:
+            links = {link.get("name", "") for link in root.findall("link")}
+            check_srdf_document(srdf, links, "srdf", self.limits.xml)
+
     def _build_stored(self, stored: StoredRobot) -> RobotModel:
         """The model of a stored robot; a record that cannot be served is a 409 naming it.
 
@@ -473,11 +484,7 @@ class Registry:
             if urdf is None:  # deleted by another process since the listing
                 raise UnknownNameError("robot", stored.id, "robot_id", self.ids())
             srdf = stored.read_text(SRDF_FILE)
-            root = parse_literal_xml(urdf, "urdf", self.limits.xml)
-            check_urdf_document(root, "urdf", self.limits)
-            if srdf is not None:
-                links = {link.get("name", "") for link in root.findall("link")}
-                check_srdf_document(srdf, links, "srdf", self.limits.xml)
+            self.check_documents(urdf, srdf)
             meta = stored.meta
             return RobotModel(
                 stored.id,
@@ -622,15 +629,7 @@ class Registry:
         check_text(description, "description")
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
-        root = parse_literal_xml(urdf, "urdf", self.limits.xml)
-        check_urdf_document(root, "urdf", self.limits)
-        if srdf is not None:
-            check_srdf_document(
-                srdf,
-                {link.get("name", "") for link in root.findall("link")},
-                "srdf",
-                self.limits.xml,
-            )
+        self.check_documents(urdf, srdf)
         robot = build_checked_model(
             robot_id,
             urdf,
