@@ -6,16 +6,41 @@ HOST   ?= 127.0.0.1
 PORT   ?= 8000
 STAMP  := $(VENV)/.installed
 
-.PHONY: install run test lint bench openapi clean
+LOCK     := requirements-dev.lock
+RT_LOCK  := requirements.lock
+IMAGE    ?= denavit
+
+.PHONY: install run test lint bench openapi lock image container-check clean
 
 install: $(STAMP)
 
-# Re-install only when the project's dependency list changes.
-$(STAMP): pyproject.toml
+# Exactly the locked packages (hash-checked, no resolution), then the project itself,
+# editable, built with the locked setuptools. Re-installs when the lock changes.
+$(STAMP): pyproject.toml $(LOCK)
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]'
+	$(BIN)/python -m pip install --quiet --no-deps --require-hashes -r $(LOCK)
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
 	touch $(STAMP)
+
+# Re-resolve every transitive dependency from pyproject.toml (its == pins, the build
+# backend, [tool.uv] overrides) into the two hash-locked files; the runtime lock is
+# constrained to the development one, so both hold the same versions.
+BUILD_REQUIRES = $(BIN)/python -c 'import tomllib; \
+	print(*tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"], sep="\n")'
+UV_COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes \
+	--annotation-style line
+lock: install
+	$(BUILD_REQUIRES) | $(UV_COMPILE) pyproject.toml - --extra test -o $(LOCK)
+	$(BUILD_REQUIRES) | $(UV_COMPILE) pyproject.toml - -c $(LOCK) -o $(RT_LOCK)
+
+# The production image: docker when its engine answers, else podman.
+image:
+	if docker info >/dev/null 2>&1; then docker build -t $(IMAGE) .; \
+	else podman build --format docker -t $(IMAGE) .; fi
+
+# Build and run the image for real and check it (root, Debian; see its header).
+container-check:
+	bash .ci/container-check.sh
 
 # The same entry as the Docker image: settings from DENAVIT_* (HOST and PORT override).
 run: install
