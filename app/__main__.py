@@ -5,6 +5,9 @@ The one entry point of ``make run`` and of the Docker image::
     python -m app               # serve (host, port, workers... from DENAVIT_* variables)
     python -m app healthcheck   # exit 0 if GET /health on this host's port answers "ok"
     python -m app openapi PATH  # write the OpenAPI schema the app serves (make openapi)
+    python -m app warm-up [--require-cache]
+                                # compile the IK kernels into Numba's cache (the image's
+                                # build); with the flag, exit 1 unless all came from it
 
 Server options and why (measured in docs/benchmarks.md, "Forward kinematics over HTTP"):
 uvloop event loop and httptools parser (the fastest uvicorn pair), uvicorn's access log off
@@ -27,7 +30,7 @@ import orjson
 from app.observability import logging_config
 from app.settings import Settings, get_settings
 
-USAGE = "usage: python -m app [healthcheck | openapi PATH]"
+USAGE = "usage: python -m app [healthcheck | openapi PATH | warm-up [--require-cache]]"
 
 
 def server_options(settings: Settings) -> dict[str, Any]:
@@ -95,8 +98,34 @@ def write_openapi(path: Path) -> None:
     atomic_write_bytes(path, openapi_text().encode())
 
 
+def warm_up(require_cache: bool) -> int:
+    """Compile (or load) the IK kernels; one JSON line on stdout saying which and where.
+    1 if ``require_cache`` and any kernel had to be compiled (the cache missed)."""
+    import os
+    import time
+
+    from app.kinematics import ik
+
+    start = time.perf_counter()
+    ik.warm_up()
+    stats = ik.kernel_cache_stats()
+    report = {
+        **stats,
+        "seconds": round(time.perf_counter() - start, 3),
+        "module": ik.__file__,
+        "numba_cache_dir": os.environ.get("NUMBA_CACHE_DIR"),
+    }
+    print(json.dumps(report))
+    if require_cache and (stats["compiled"] or not stats["loaded"]):
+        print("denavit: the IK kernels were not all loaded from Numba's cache", file=sys.stderr)
+        return 1
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
+    if args and args[0] == "warm-up" and args[1:] in ([], ["--require-cache"]):
+        return warm_up(require_cache=args[1:] == ["--require-cache"])
     if not (args in ([], ["healthcheck"]) or (len(args) == 2 and args[0] == "openapi")):
         print(USAGE, file=sys.stderr)
         return 2

@@ -312,6 +312,22 @@ def warm_up() -> None:
         analytic_ik.warm_up()
 
 
+def kernel_cache_stats() -> dict[str, int]:
+    """How this process got its compiled kernels: ``loaded`` from Numba's on-disk cache,
+    ``compiled`` anew (each counts kernel × argument types; both 0 before :func:`warm_up`)."""
+    if not ik_kernel.available():
+        return {"loaded": 0, "compiled": 0}
+    from numba.core.dispatcher import Dispatcher
+
+    loaded = compiled = 0
+    for module in (ik_kernel, analytic_ik):
+        for obj in vars(module).values():
+            if isinstance(obj, Dispatcher):
+                loaded += sum(obj.stats.cache_hits.values())
+                compiled += sum(obj.stats.cache_misses.values())
+    return {"loaded": loaded, "compiled": compiled}
+
+
 def chain(robot: RobotModel, frame: str) -> Chain:
     """The cached :class:`Chain` of ``frame`` (raises UnknownNameError for a bad frame)."""
     robot.frame_id(frame)
