@@ -47,8 +47,8 @@ run: install
 	DENAVIT_HOST=$(HOST) DENAVIT_PORT=$(PORT) $(BIN)/python -m app
 
 lint: install
-	$(BIN)/ruff check app dh2urdf robots tests bench
-	$(BIN)/ruff format --check app dh2urdf robots tests bench
+	$(BIN)/ruff check app dh2urdf robots tests bench deploy
+	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy
 	$(BIN)/hadolint Dockerfile
 
 test: install lint
