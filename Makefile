@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install run test lint bench openapi lock image container-check clean
+.PHONY: install run test lint bench openapi lock image container-check compose-check clean
 
 install: $(STAMP)
 
@@ -38,9 +38,16 @@ image:
 	if docker info >/dev/null 2>&1; then docker build -t $(IMAGE) .; \
 	else podman build --format docker -t $(IMAGE) .; fi
 
-# Build and run the image for real and check it (root, Debian; see its header).
+# Build the image with podman, run it for real and check it (root on Debian: see the
+# script's header). The workplace's ../shared/container-check.sh when there, else the copy
+# in .ci/ (the same file, unmodified).
+CONTAINER_CHECK = $(firstword $(wildcard ../shared/container-check.sh) .ci/container-check.sh)
 container-check:
-	bash .ci/container-check.sh
+	bash $(CONTAINER_CHECK)
+
+# compose.yaml with podman-compose on the image container-check built (deploy/compose-check.sh).
+compose-check: install
+	PATH=$(CURDIR)/$(BIN):$$PATH bash deploy/compose-check.sh
 
 # The same entry as the Docker image: settings from DENAVIT_* (HOST and PORT override).
 run: install
