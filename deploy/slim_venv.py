@@ -9,7 +9,7 @@ safe; everything else is left as installed:
 - ``cmeel.prefix``'s build-time files: C++ headers (``include/``, Boost's alone is 185 MB),
   CMake and pkg-config files, static archives, command-line tools, man pages and docs.
   Nothing is compiled against them in the image.
-- ``example-robot-data`` packages the catalog does not name (35 of 41, ~315 MB of meshes):
+- ``example-robot-data`` packages the catalog does not name (33 of 39, ~330 MB of meshes):
   the service loads example-robot-data robots only through the catalog.
 - Copies of one shared library under its link names: wheels cannot hold symlinks, so
   ``libassimp.so``, ``libassimp.so.6`` and ``libassimp.so.6.0.5`` are three 14 MB files.
