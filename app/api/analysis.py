@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Annotated
 
 import numpy as np
-from fastapi import APIRouter, Depends, Request
+from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
 from app.api.common import (
@@ -28,9 +28,9 @@ from app.api.common import (
     load_robot,
     offload,
     parse_json,
-    registry,
     validate_body,
 )
+from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES
 from app.api.jacobian import REFERENCE_DOC
 from app.kinematics.analysis import (
@@ -46,7 +46,6 @@ from app.kinematics.analysis import (
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.jacobian import Reference
 from app.kinematics.models import check_joint_values
-from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["analysis"])
 
@@ -201,7 +200,7 @@ def _manip_json(robot_id: str, frame: str, reference: str, q: np.ndarray, res) -
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def compute_manipulability(
-    robot_id: RobotId, body: ManipulabilityRequest, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, body: ManipulabilityRequest, reg: RegistryDep
 ) -> ORJSONResponse:
     """Manipulability, singularity and ellipsoids of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)
@@ -249,7 +248,7 @@ def _batch_body(raw: bytes, n_joints: int) -> tuple[ManipulabilityBatchRequest, 
     openapi_extra=body_schema(ManipulabilityBatchRequest),
 )
 async def compute_manipulability_batch(
-    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, request: Request, reg: RegistryDep
 ) -> ORJSONResponse:
     """Scalar manipulability measures for many configurations (computed off the event loop)."""
     robot = await load_robot(reg, robot_id)
@@ -284,7 +283,7 @@ async def compute_manipulability_batch(
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def compute_statics(
-    robot_id: RobotId, body: StaticsRequest, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, body: StaticsRequest, reg: RegistryDep
 ) -> ORJSONResponse:
     """Joint torques τ = Jᵀ·F from a wrench at a frame, or the least-squares wrench from τ."""
     if (body.wrench is None) == (body.torques is None):

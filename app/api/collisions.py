@@ -11,7 +11,7 @@ import threading
 from typing import Annotated, Literal
 
 import numpy as np
-from fastapi import APIRouter, Depends, Request
+from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field, Strict
 
 from app.api.common import (
@@ -24,10 +24,10 @@ from app.api.common import (
     load_robot,
     offload,
     offload_cancellable,
-    registry,
 )
+from app.api.deps import RegistryDep, SceneStoreDep
 from app.api.errors import ERROR_RESPONSES
-from app.api.scenes import ObstacleIn, resolve_obstacles, scene_store
+from app.api.scenes import ObstacleIn, resolve_obstacles
 from app.kinematics.collision import (
     collision_link_pairs,
     collision_links,
@@ -37,8 +37,6 @@ from app.kinematics.collision import (
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel, check_joint_values
 from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle
-from app.registry import Registry
-from app.scenes import SceneStore
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["collisions"])
 
@@ -173,8 +171,8 @@ def _check(robot: RobotModel, q: np.ndarray, obstacles: tuple[Obstacle, ...], bo
 async def check_collisions(
     robot_id: RobotId,
     body: CollisionRequest,
-    reg: Annotated[Registry, Depends(registry)],
-    store: Annotated[SceneStore, Depends(scene_store)],
+    reg: RegistryDep,
+    store: SceneStoreDep,
 ) -> ORJSONResponse:
     """Self-collision and collision with obstacles at one configuration.
 
@@ -235,8 +233,8 @@ def _check_batch(
 async def check_collisions_batch(
     robot_id: RobotId,
     body: CollisionBatchRequest,
-    reg: Annotated[Registry, Depends(registry)],
-    store: Annotated[SceneStore, Depends(scene_store)],
+    reg: RegistryDep,
+    store: SceneStoreDep,
     request: Request,
 ) -> ORJSONResponse:
     """Check many configurations (e.g. a trajectory's waypoints) in the work pool."""
@@ -266,9 +264,7 @@ async def check_collisions_batch(
     response_model=CollisionPairsResponse,
     responses={404: ERROR_RESPONSES[404]},
 )
-def get_collision_pairs(
-    robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]
-) -> ORJSONResponse:
+def get_collision_pairs(robot_id: RobotId, reg: RegistryDep) -> ORJSONResponse:
     """The self-collision link pairs checked (after removing same-body, adjacent and
     SRDF-disabled pairs); computed from the URDF without loading meshes."""
     robot = reg.get(robot_id)

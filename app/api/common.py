@@ -27,7 +27,6 @@ from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
 from app.kinematics.text import SURROGATE_REASON, find_surrogate, has_surrogate
 from app.registry import Registry
-from app.settings import Settings
 
 #: A finite JSON number (ints accepted; strings, booleans, NaN and ±Infinity rejected).
 Finite = Annotated[float, Strict(), Field(allow_inf_nan=False)]
@@ -170,16 +169,6 @@ def _fallback(obj: Any) -> Any:
     if isinstance(obj, np.generic):
         return obj.item()
     raise TypeError(f"cannot serialise {type(obj).__name__}")
-
-
-async def registry(request: Request) -> Registry:
-    """The app's robot registry (``async``: FastAPI runs sync dependencies in a thread)."""
-    return request.app.state.registry
-
-
-async def app_settings(request: Request) -> Settings:
-    """The app's settings (those given to ``create_app``); ``async``, no thread hop."""
-    return request.app.state.settings
 
 
 async def load_robot(reg: Registry, robot_id: str) -> RobotModel:

@@ -2,10 +2,8 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
 import numpy as np
-from fastapi import APIRouter, Depends, Request
+from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
 from app.api.common import (
@@ -17,22 +15,19 @@ from app.api.common import (
     RobotId,
     Schema,
     Vec3Out,
-    app_settings,
     body_schema,
     finite_matrix,
     load_robot,
     offload,
     parse_json,
     pose_json,
-    registry,
     validate_body,
 )
+from app.api.deps import RegistryDep, SettingsDep
 from app.api.errors import ERROR_RESPONSES
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
 from app.kinematics.models import RobotModel, check_joint_values
-from app.registry import Registry
-from app.settings import Settings
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
@@ -81,9 +76,7 @@ class FKBatchResponse(BaseModel):
     response_model=FKResponse,
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
-async def compute_fk(
-    robot_id: RobotId, body: FKRequest, reg: Annotated[Registry, Depends(registry)]
-) -> ORJSONResponse:
+async def compute_fk(robot_id: RobotId, body: FKRequest, reg: RegistryDep) -> ORJSONResponse:
     """Poses of frames at one configuration.
 
     Out-of-limit configurations are computed, and flagged with ``within_limits: false``.
@@ -114,8 +107,8 @@ async def compute_fk(
 async def compute_fk_batch(
     robot_id: RobotId,
     request: Request,
-    reg: Annotated[Registry, Depends(registry)],
-    settings: Annotated[Settings, Depends(app_settings)],
+    reg: RegistryDep,
+    settings: SettingsDep,
 ) -> ORJSONResponse:
     """Position and orientation of one frame for many configurations.
 

@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import math
 import threading
 import time
 from typing import Annotated, Any, Literal
 
 import numpy as np
 import pinocchio as pin
-from fastapi import APIRouter, Depends, Request
+from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
 from app.api.common import (
@@ -22,10 +21,10 @@ from app.api.common import (
     Schema,
     load_robot,
     offload_cancellable,
-    registry,
 )
+from app.api.deps import RegistryDep, scene_store
 from app.api.errors import ERROR_RESPONSES
-from app.api.scenes import ObstacleIn, resolve_obstacles, scene_store
+from app.api.scenes import ObstacleIn, resolve_obstacles
 from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
@@ -35,17 +34,14 @@ from app.kinematics.models import (
     check_bounded,
     check_joint_value,
 )
-from app.kinematics.rotations import quaternion_to_matrix
+from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
 from app.observability import record_ik
-from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
 
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
 
-#: Largest deviation of |quaternion| from 1 accepted (the quaternion is then normalised).
-QUAT_NORM_TOL = 1e-3
 #: Largest deviation of RᵀR from I (and of the bottom row from [0 0 0 1]) accepted in a matrix.
 MATRIX_TOL = 1e-6
 #: IK requests with a budget up to this run on the event loop (no thread hop).
@@ -219,14 +215,7 @@ def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE
     elif mode != "orientation":
         raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
     if target.orientation is not None:
-        qv = np.array(target.orientation, dtype=float)
-        norm = math.hypot(*target.orientation)  # no overflow warning for huge components
-        if not abs(norm - 1.0) <= QUAT_NORM_TOL:
-            raise InvalidInputError(
-                f"must be a unit quaternion [x, y, z, w] (norm {norm:.6g})",
-                f"{field}.orientation",
-            )
-        R = quaternion_to_matrix(qv / norm)
+        R = quaternion_to_matrix(unit_quaternion(target.orientation, f"{field}.orientation"))
     elif mode != "position":
         raise InvalidInputError(f"required for mode {mode!r}", f"{field}.orientation")
     return pin.SE3(R, p)
@@ -410,7 +399,7 @@ async def solve_ik(
     robot_id: RobotId,
     body: IKRequest,
     request: Request,
-    reg: Annotated[Registry, Depends(registry)],
+    reg: RegistryDep,
 ) -> ORJSONResponse:
     """Joint configurations that place a frame at a target pose.
 
@@ -445,7 +434,7 @@ async def solve_ik_batch(
     robot_id: RobotId,
     body: IKBatchRequest,
     request: Request,
-    reg: Annotated[Registry, Depends(registry)],
+    reg: RegistryDep,
 ) -> ORJSONResponse:
     """IK for many targets of one frame, in order, computed in the work pool.
 

@@ -2,15 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
-from fastapi import APIRouter, Depends
+from fastapi import APIRouter
 from pydantic import BaseModel, Field
 
-from app.api.common import ConfigurationIn, ORJSONResponse, RobotId, load_robot, registry
+from app.api.common import ConfigurationIn, ORJSONResponse, RobotId, load_robot
+from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES
 from app.kinematics.jacobian import Reference, frame_jacobian
-from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
@@ -46,7 +44,7 @@ class JacobianResponse(BaseModel):
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def compute_jacobian(
-    robot_id: RobotId, body: JacobianRequest, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, body: JacobianRequest, reg: RegistryDep
 ) -> ORJSONResponse:
     """Geometric Jacobian of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)

@@ -44,9 +44,9 @@ from app.api.common import (
     load_robot,
     offload,
     parse_json,
-    registry,
     validate_body,
 )
+from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES
 from app.api.security import require_token
 from app.kinematics.analysis import Part
@@ -59,10 +59,10 @@ from app.kinematics.reachability import (
     ReachabilityMap,
     make_spec,
     meta_public,
-    quaternions_checked,
     robot_fingerprint,
     self_collision_check,
 )
+from app.kinematics.rotations import unit_quaternions
 from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}/reachability", tags=["reachability"])
@@ -241,7 +241,7 @@ async def build_reachability_map(
     robot_id: RobotId,
     body: BuildRequest,
     request: Request,
-    reg: Annotated[Registry, Depends(registry)],
+    reg: RegistryDep,
 ) -> ORJSONResponse:
     """Start building a reachability map in the background; poll the returned job."""
     robot = await load_robot(reg, robot_id)
@@ -279,7 +279,7 @@ async def build_reachability_map(
     "/jobs", operation_id="list_reachability_jobs", response_model=JobList, responses=ERRORS
 )
 async def list_reachability_jobs(
-    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, request: Request, reg: RegistryDep
 ) -> ORJSONResponse:
     """Build jobs of this robot (started through any worker), oldest first."""
     await load_robot(reg, robot_id)
@@ -325,7 +325,7 @@ async def cancel_reachability_job(
 
 @router.get("/maps", operation_id="list_reachability_maps", response_model=MapList)
 async def list_reachability_maps(
-    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, request: Request, reg: RegistryDep
 ) -> ORJSONResponse:
     """Stored maps of this robot, oldest first."""
     await load_robot(reg, robot_id)
@@ -402,7 +402,7 @@ def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray |
                 quat = finite_matrix([p["orientation"] for p in poses], 4) if with_q else None
                 if pos is not None and (quat is not None or not with_q):
                     if quat is not None:
-                        quat = quaternions_checked(quat, "poses.{}.orientation")
+                        quat = unit_quaternions(quat, "poses.{}.orientation")
                     return _check_query(obj["map_id"], pos, quat, "poses", limit)
     body = validate_body(QueryRequest, obj)
     if (body.poses is None) == (body.positions is None):
@@ -417,7 +417,7 @@ def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray |
         given = ~np.isnan(quat[:, 0])
         if given.any():
             rows = np.flatnonzero(given)
-            quat[given] = quaternions_checked(quat[given], "poses.{}.orientation", rows)
+            quat[given] = unit_quaternions(quat[given], "poses.{}.orientation", rows)
         return _check_query(body.map_id, pos, quat, "poses", limit)
     pos = np.array(body.positions, dtype=float).reshape(len(body.positions), 3)
     quat = None if body.orientations is None else np.array(body.orientations, dtype=float)
@@ -438,7 +438,7 @@ def _check_query(
                 f"expected {n} orientations (one per position), got {quat.shape[0]}",
                 "orientations",
             )
-        quat = quaternions_checked(quat.reshape(n, 4), "orientations.{}")
+        quat = unit_quaternions(quat.reshape(n, 4), "orientations.{}")
     return map_id, pos, quat
 
 
@@ -450,7 +450,7 @@ def _check_query(
     openapi_extra=body_schema(QueryRequest),
 )
 async def query_reachability(
-    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, request: Request, reg: RegistryDep
 ) -> ORJSONResponse:
     """Look poses up in a map: O(1) each. Outside the map's box → not reachable.
 
@@ -553,7 +553,7 @@ async def get_reachability_slice(
     robot_id: RobotId,
     map_id: MapId,
     request: Request,
-    reg: Annotated[Registry, Depends(registry)],
+    reg: RegistryDep,
     x: Annotated[float | None, Query(description="Slice at this x (m).")] = None,
     y: Annotated[float | None, Query(description="Slice at this y (m).")] = None,
     z: Annotated[float | None, Query(description="Slice at this z (m).")] = None,

@@ -10,7 +10,7 @@ DELETE /robots/{robot_id} (user-added robots only). Write bodies are capped at
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+from typing import Any, Literal
 
 import yaml
 from fastapi import APIRouter, Depends, Request
@@ -26,9 +26,9 @@ from app.api.common import (
     body_schema,
     offload,
     parse_json,
-    registry,
     validate_body,
 )
+from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
 from app.api.security import require_token
 from app.kinematics.collision import collision_link_pairs
@@ -292,9 +292,7 @@ def _add_urdf(reg: Registry, upload: UrdfUpload) -> dict[str, Any]:
         }
     },
 )
-async def import_dh_robot(
-    request: Request, reg: Annotated[Registry, Depends(registry)]
-) -> Response:
+async def import_dh_robot(request: Request, reg: RegistryDep) -> Response:
     """Add a robot from a DH table; its id is the table's ``name``.
 
     The body is the table as JSON, or as YAML with ``Content-Type: application/yaml`` (or
@@ -336,9 +334,7 @@ async def import_dh_robot(
     responses=_WRITE_ERRORS,
     openapi_extra=body_schema(UrdfUpload),
 )
-async def upload_urdf_robot(
-    request: Request, reg: Annotated[Registry, Depends(registry)]
-) -> Response:
+async def upload_urdf_robot(request: Request, reg: RegistryDep) -> Response:
     """Add a robot from URDF text (and optional SRDF); its id is ``name``.
 
     The XML is checked first, read as Pinocchio reads it (names taken literally, namespaces
@@ -366,7 +362,7 @@ async def upload_urdf_robot(
     dependencies=[Depends(require_token)],
     responses={k: _WRITE_ERRORS[k] for k in (401, 403, 422)} | {404: ERROR_RESPONSES[404]},
 )
-def delete_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> Response:
+def delete_robot(robot_id: RobotId, reg: RegistryDep) -> Response:
     """Remove a user-added robot (every worker stops serving it); built-in robots: 403."""
     reg.delete(robot_id)
     return Response(status_code=204)
@@ -374,7 +370,7 @@ def delete_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)])
 
 # ---------------------------------------------------------------------- reads
 @router.get("", operation_id="list_robots", response_model=RobotList)
-def list_robots(reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
+def list_robots(reg: RegistryDep) -> ORJSONResponse:
     """List every robot: catalog robots, DH robots and user-added ones."""
     return ORJSONResponse(
         {
@@ -398,7 +394,7 @@ def list_robots(reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
     response_model=RobotDetail,
     responses={404: ERROR_RESPONSES[404], 422: ERROR_RESPONSES[422]},
 )
-def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> ORJSONResponse:
+def get_robot(robot_id: RobotId, reg: RegistryDep) -> ORJSONResponse:
     """Describe a robot: joints in order, frames, default end effector, neutral configuration.
 
     Runs in the thread pool: the first request for a robot parses its URDF.
@@ -419,7 +415,7 @@ def get_robot(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) ->
         422: ERROR_RESPONSES[422],
     },
 )
-def get_robot_urdf(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)]) -> Response:
+def get_robot_urdf(robot_id: RobotId, reg: RegistryDep) -> Response:
     """The robot's URDF: the catalog file, the uploaded text, or the one generated from a
     DH table (links ``dh_0`` … ``dh_n`` and ``tool``; SI units)."""
     return Response(reg.urdf_text(robot_id), media_type="application/xml")
@@ -435,9 +431,7 @@ def get_robot_urdf(robot_id: RobotId, reg: Annotated[Registry, Depends(registry)
         422: ERROR_RESPONSES[422],
     },
 )
-def get_robot_dh(
-    robot_id: RobotId, request: Request, reg: Annotated[Registry, Depends(registry)]
-) -> Response:
+def get_robot_dh(robot_id: RobotId, request: Request, reg: RegistryDep) -> Response:
     """The DH table a robot was built from, in SI units (m, rad) as validated on import.
 
     JSON by default; YAML when the ``Accept`` header asks for ``application/yaml``. 404 for

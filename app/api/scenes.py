@@ -10,11 +10,12 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from fastapi import APIRouter, Depends, Path, Request
+from fastapi import APIRouter, Depends, Path
 from pydantic import BaseModel, Field, Strict
 from starlette.responses import Response
 
 from app.api.common import ORJSONResponse, Quat, Schema, Text, Vec3, Vec3Out
+from app.api.deps import SceneStoreDep
 from app.api.errors import ERROR_RESPONSES
 from app.api.security import require_token
 from app.kinematics.errors import InvalidInputError
@@ -101,15 +102,6 @@ class SceneList(BaseModel):
     scenes: list[SceneSummary]
 
 
-def scene_store(request: Request) -> SceneStore:
-    """The app's scene store (``<data_dir>/scenes``), created on first use."""
-    store = getattr(request.app.state, "scenes", None)
-    if store is None:
-        store = SceneStore(request.app.state.settings.data_dir / "scenes")
-        request.app.state.scenes = store
-    return store
-
-
 def resolve_obstacles(
     store: SceneStore, obstacles: list[ObstacleIn] | None, scene: str | None
 ) -> tuple[Obstacle, ...]:
@@ -138,9 +130,7 @@ def resolve_obstacles(
         409: {**ERROR_RESPONSES[422], "description": "A scene with this name exists."},
     },
 )
-def create_scene(
-    body: SceneIn, store: Annotated[SceneStore, Depends(scene_store)]
-) -> ORJSONResponse:
+def create_scene(body: SceneIn, store: SceneStoreDep) -> ORJSONResponse:
     """Store a named set of obstacles (409 if the name is taken; persisted across restarts)."""
     scene = store.create(
         body.name,
@@ -151,7 +141,7 @@ def create_scene(
 
 
 @router.get("", operation_id="list_scenes", response_model=SceneList)
-def list_scenes(store: Annotated[SceneStore, Depends(scene_store)]) -> ORJSONResponse:
+def list_scenes(store: SceneStoreDep) -> ORJSONResponse:
     """List the stored scenes."""
     return ORJSONResponse(
         {
@@ -169,9 +159,7 @@ def list_scenes(store: Annotated[SceneStore, Depends(scene_store)]) -> ORJSONRes
     response_model=SceneOut,
     responses={404: ERROR_RESPONSES[404]},
 )
-def get_scene(
-    name: SceneName, store: Annotated[SceneStore, Depends(scene_store)]
-) -> ORJSONResponse:
+def get_scene(name: SceneName, store: SceneStoreDep) -> ORJSONResponse:
     """A stored scene with its obstacles."""
     return ORJSONResponse(store.get(name, field="name").to_json())
 
@@ -183,7 +171,7 @@ def get_scene(
     dependencies=[Depends(require_token)],
     responses={404: ERROR_RESPONSES[404]},
 )
-def delete_scene(name: SceneName, store: Annotated[SceneStore, Depends(scene_store)]) -> Response:
+def delete_scene(name: SceneName, store: SceneStoreDep) -> Response:
     """Delete a stored scene."""
     store.delete(name, field="name")
     return Response(status_code=204)

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from fastapi import APIRouter, Depends
+from fastapi import APIRouter
 from pydantic import BaseModel, Field
 
-from app.api.common import ConfigurationIn, Finite, ORJSONResponse, RobotId, load_robot, registry
+from app.api.common import ConfigurationIn, Finite, ORJSONResponse, RobotId, load_robot
+from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.velocity import (
@@ -17,7 +18,6 @@ from app.kinematics.velocity import (
     forward_velocity,
     inverse_velocity,
 )
-from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
@@ -80,7 +80,7 @@ class VelocityResponse(BaseModel):
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def compute_velocity(
-    robot_id: RobotId, body: VelocityRequest, reg: Annotated[Registry, Depends(registry)]
+    robot_id: RobotId, body: VelocityRequest, reg: RegistryDep
 ) -> ORJSONResponse:
     """Forward twist J·q̇, or inverse q̇ = J⁺·twist damped near singularities."""
     if (body.joint_velocities is None) == (body.twist is None):

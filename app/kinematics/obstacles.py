@@ -17,8 +17,8 @@ An obstacle is ``{name, shape, size | radius (+ length), pose {position, orienta
 
 ``pose.position`` is [x, y, z] (m) and ``pose.orientation`` a quaternion [x, y, z, w] in the
 robot's root (world) frame; a missing pose is the identity. Orientations are normalised; a
-quaternion whose norm differs from 1 by more than :data:`QUATERNION_NORM_TOLERANCE` is
-rejected as a likely mistake.
+quaternion whose norm differs from 1 by more than
+:data:`app.kinematics.rotations.QUATERNION_NORM_TOLERANCE` is rejected as a likely mistake.
 
 Validation lives here, not in the HTTP layer, so obstacles read back from a stored scene go
 through the same checks as obstacles given inline. Every error names its field
@@ -37,12 +37,10 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.rotations import quaternion_to_matrix
+from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
 from app.kinematics.text import check_text
 
 SHAPES = ("box", "sphere", "cylinder", "capsule")
-#: Largest accepted | ‖quaternion‖ − 1 | before normalisation.
-QUATERNION_NORM_TOLERANCE = 1e-3
 #: Most obstacles in one request or scene.
 MAX_OBSTACLES = 1000
 #: Longest obstacle name.
@@ -137,11 +135,7 @@ def _vector(value: Any, length: int, field: str, *, positive: bool = False) -> t
 
 
 def _orientation(value: Any, field: str) -> tuple[float, float, float, float]:
-    quat = np.array(_vector(value, 4, field))
-    norm = float(np.linalg.norm(quat))
-    if abs(norm - 1.0) > QUATERNION_NORM_TOLERANCE:
-        raise InvalidInputError(f"must be a unit quaternion [x, y, z, w] (norm {norm:.6g})", field)
-    quat = quat / norm
+    quat = unit_quaternion(np.array(_vector(value, 4, field)), field)
     if quat[3] < 0.0:
         quat = -quat
     return tuple(float(v) + 0.0 for v in quat)  # type: ignore[return-value]

@@ -930,22 +930,6 @@ def meta_public(meta: dict[str, Any]) -> dict[str, Any]:
     }
 
 
-def quaternions_checked(
-    quats: np.ndarray, field: str, index: np.ndarray | None = None
-) -> np.ndarray:
-    """Normalise quaternions (N, 4); a norm off 1 by more than 1e-3 is an error naming
-    ``field.format(i)`` (i = the row, or ``index[row]``)."""
-    with np.errstate(over="ignore"):  # a huge component: norm inf, reported below
-        norms = np.linalg.norm(quats, axis=1)
-    bad = np.flatnonzero(~(np.abs(norms - 1.0) <= 1e-3))
-    if bad.size:
-        i = int(bad[0] if index is None else index[bad[0]])
-        raise InvalidInputError(
-            f"quaternion norm {norms[bad[0]]:.6g} is not 1 (±1e-3)", field.format(i)
-        )
-    return quats / norms[:, None]
-
-
 # ------------------------------------------------------------------------------ storage
 MAP_ID_LENGTH = 32
 

@@ -9,6 +9,50 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.kinematics.errors import InvalidInputError
+
+#: Largest accepted | ‖q‖ − 1 | of a quaternion given on the wire; within it the quaternion
+#: is normalised, beyond it the request is refused (one value for every endpoint).
+QUATERNION_NORM_TOLERANCE = 1e-3
+
+
+def unit_quaternions(quats: np.ndarray, field: str, index: np.ndarray | None = None) -> np.ndarray:
+    """Quaternions (N, 4) [x, y, z, w] → normalised copies, or the one error for a bad norm.
+
+    Parameters
+    ----------
+    quats
+        Finite quaternions, one per row.
+    field
+        The field of row i as ``field.format(i)`` (i = the row, or ``index[row]``).
+
+    Raises
+    ------
+    InvalidInputError
+        For the first row whose norm is off 1 by more than
+        :data:`QUATERNION_NORM_TOLERANCE` (including a norm that overflows to inf).
+    """
+    quats = np.asarray(quats, dtype=float).reshape(-1, 4)
+    with np.errstate(over="ignore"):  # a huge component: norm inf, reported below
+        norms = np.linalg.norm(quats, axis=1)
+    bad = np.flatnonzero(~(np.abs(norms - 1.0) <= QUATERNION_NORM_TOLERANCE))
+    if bad.size:
+        i = int(bad[0] if index is None else index[bad[0]])
+        raise InvalidInputError(_norm_reason(float(norms[bad[0]])), field.format(i))
+    return quats / norms[:, None]
+
+
+def unit_quaternion(quat: np.ndarray | list[float], field: str) -> np.ndarray:
+    """One quaternion [x, y, z, w] → its normalised copy (4,); see :func:`unit_quaternions`."""
+    return unit_quaternions(np.asarray(quat, dtype=float), field)[0]
+
+
+def _norm_reason(norm: float) -> str:
+    return (
+        f"must be a unit quaternion [x, y, z, w]: its norm {norm:.6g} is off 1 by more "
+        f"than {QUATERNION_NORM_TOLERANCE:g}"
+    )
+
 
 def matrix_to_quaternion(R: np.ndarray) -> np.ndarray:
     """Rotation matrices (..., 3, 3) → unit quaternions (..., 4) as [x, y, z, w], w ≥ 0.
