@@ -27,7 +27,7 @@ from typing import Any
 
 import orjson
 
-from app.observability import logging_config
+from app.logs import logging_config
 from app.settings import Settings, get_settings
 
 USAGE = "usage: python -m app [healthcheck | openapi PATH | warm-up [--require-cache]]"

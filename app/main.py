@@ -30,8 +30,9 @@ from app.body_limit import BodyLimitMiddleware
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import ik, procwatch
 from app.kinematics.xmldoc import XmlLimits
+from app.logs import configure_logging
 from app.methods import MethodsMiddleware
-from app.observability import ObservabilityMiddleware, configure_logging
+from app.observability import ObservabilityMiddleware
 from app.registry import Registry, UrdfLimits
 from app.settings import Settings, get_settings
 from app.store import remove_stale_temporaries

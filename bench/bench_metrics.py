@@ -20,7 +20,8 @@ import time
 from pathlib import Path
 from typing import Any
 
-from app.observability import Metrics, ObservabilityMiddleware
+from app.metrics import Metrics
+from app.observability import ObservabilityMiddleware
 
 ROUTES = [f"/robots/{{robot_id}}/route{i}" for i in range(20)]
 

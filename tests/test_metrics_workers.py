@@ -18,6 +18,7 @@ from typing import Any
 import httpx
 import pytest
 
+from app.metrics import Metrics
 from app.metrics_shm import (
     INITIAL_SIZE,
     ValueFile,
@@ -27,7 +28,7 @@ from app.metrics_shm import (
     read_values,
     remove_stale_instances,
 )
-from app.observability import Metrics, ObservabilityMiddleware
+from app.observability import ObservabilityMiddleware
 from tests.live import serve
 from tests.test_production import parse_metrics
 

@@ -30,7 +30,7 @@ from starlette.middleware.base import BaseHTTPMiddleware
 from app.api.common import offload
 from app.api.security import require_token
 from app.main import create_app
-from app.observability import METRICS, record_ik
+from app.metrics import METRICS, record_ik
 from app.settings import Settings
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -488,7 +488,7 @@ def test_record_ik_counts_outcomes(client) -> None:
 
 
 def test_metric_label_values_are_escaped() -> None:
-    from app.observability import Metrics
+    from app.metrics import Metrics
 
     m = Metrics()
     m.observe("GET", 'a"b\\c\nd', 200, 0.001)

@@ -28,12 +28,8 @@ from app.api.common import (
 from app.api.deps import RegistryDep, SceneStoreDep
 from app.api.errors import ERROR_RESPONSES
 from app.api.scenes import ObstacleIn, resolve_obstacles
-from app.kinematics.collision import (
-    collision_link_pairs,
-    collision_links,
-    collision_model,
-    report_json,
-)
+from app.kinematics.collision import collision_model, report_json
+from app.kinematics.collision_pairs import collision_link_pairs, collision_links
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel, check_joint_values
 from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle

@@ -35,7 +35,7 @@ from app.kinematics.models import (
     check_joint_value,
 )
 from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
-from app.observability import record_ik
+from app.metrics import record_ik
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
 

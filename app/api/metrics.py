@@ -6,7 +6,7 @@ from __future__ import annotations
 from fastapi import APIRouter
 from starlette.responses import Response
 
-from app.observability import METRICS
+from app.metrics import METRICS
 
 router = APIRouter(tags=["service"])
 

@@ -31,7 +31,7 @@ from app.api.common import (
 from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
 from app.api.security import require_token
-from app.kinematics.collision import collision_link_pairs
+from app.kinematics.collision_pairs import collision_link_pairs
 from app.kinematics.models import RobotModel
 from app.registry import (
     MAX_DH_DOCUMENT_BYTES,

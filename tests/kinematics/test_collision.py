@@ -14,13 +14,8 @@ from defusedxml import ElementTree
 from scipy.spatial import ConvexHull
 
 import robots
-from app.kinematics.collision import (
-    GEOMETRY_MODES,
-    collision_filter,
-    collision_link_pairs,
-    collision_model,
-    srdf_disabled_pairs,
-)
+from app.kinematics.collision import GEOMETRY_MODES, collision_filter, collision_model
+from app.kinematics.collision_pairs import collision_link_pairs, srdf_disabled_pairs
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import parse_obstacles
