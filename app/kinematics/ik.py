@@ -320,7 +320,7 @@ def kernel_cache_stats() -> dict[str, int]:
     from numba.core.dispatcher import Dispatcher
 
     loaded = compiled = 0
-    for module in (ik_kernel, analytic_ik):
+    for module in (ik_kernel, analytic_ik.ur):
         for obj in vars(module).values():
             if isinstance(obj, Dispatcher):
                 loaded += sum(obj.stats.cache_hits.values())

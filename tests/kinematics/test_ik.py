@@ -18,7 +18,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from app.kinematics import ik
-from app.kinematics.analytic_ik import into_limits, planar2_geometry, planar2_solutions
+from app.kinematics.analytic_ik.planar2 import into_limits, planar2_geometry, planar2_solutions
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
@@ -182,7 +182,7 @@ def test_ur_closed_form_on_z1_respects_narrow_limits(registry) -> None:
 
 
 def test_ur_geometry_is_detected_only_where_it_applies(registry) -> None:
-    from app.kinematics.analytic_ik import ur_geometry
+    from app.kinematics.analytic_ik.ur import ur_geometry
 
     cases = [("ur5", True), ("ur5_dh", True), ("z1", True), ("puma560", False), ("panda", False)]
     for rid, expected in cases:

@@ -10,7 +10,8 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
-from app.kinematics import analytic_ik, ik, ik_kernel
+from app.kinematics import ik, ik_kernel
+from app.kinematics.analytic_ik import planar2, ur
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
@@ -150,10 +151,10 @@ def test_compiled_ur_closed_form_equals_the_python_one(registry, robot_id, frame
         target = se3(reference_pose(robot, random_q(robot, rng), frame))
         seed = rng.uniform(-3.0, 3.0, 6)
         expected = [
-            [analytic_ik.into_limits(float(x), lo[i], hi[i], seed[i]) for i, x in enumerate(q)]
-            for q in analytic_ik.ur_solutions(geo, target, seed)
+            [planar2.into_limits(float(x), lo[i], hi[i], seed[i]) for i, x in enumerate(q)]
+            for q in ur.ur_solutions(geo, target, seed)
         ]
-        got = analytic_ik.ur_candidates_compiled(geo, target, seed, lo, hi)
+        got = ur.ur_candidates_compiled(geo, target, seed, lo, hi)
         assert got.shape == (len(expected), 6)
         if expected:
             np.testing.assert_allclose(got, expected, rtol=0, atol=1e-9)

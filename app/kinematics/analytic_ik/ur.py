@@ -1,31 +1,4 @@
-"""Closed-form inverse kinematics where a chain's geometry admits one.
-
-The numeric solver (:mod:`app.kinematics.ik`) asks :func:`candidates` first; a closed form
-returns *every* candidate configuration of the moving joints, and the solver verifies each
-one by forward kinematics (mode, tolerances, limits, ``accept``) before reporting it, so a
-closed form can only add answers, never wrong ones.
-
-Planar 2-link (RR) arms
------------------------
-A chain of exactly two revolute joints with parallel axes (the course's planar 2-link arm,
-any placement in space, any link offsets). In the plane normal to axis 1 through joint 1,
-with r1 the vector from axis 1 to axis 2 and r2 the vector from axis 2 to the frame origin at
-q = 0 (l1 = |r1|, l2 = |r2|, β = ∠(r1, r2)), the frame origin is
-
-    P(q) = Rot(q1) · (r1 + Rot(s·q2) · r2),       s = ±1 (axis 2 parallel or antiparallel)
-
-so for a target t in the plane, |t|² = l1² + l2² + 2 l1 l2 cos(s·q2 + β), i.e. the course's
-
-    c2 = (|t|² − l1² − l2²) / (2 l1 l2),   solvable iff |c2| ≤ 1,
-    s·q2 + β = ±acos(c2)                   (the two elbow solutions),
-    q1 = atan2(t) − atan2(r1 + Rot(±acos c2 − β) r2).
-
-With the DH table of DOMAIN.md (β = 0, s = 1) this is θ2 = ±acos(c2) and
-θ1 = atan2(y, x) − atan2(l2 sin θ2, l1 + l2 cos θ2). Each angle is moved by a multiple of 2π
-into the joint's limits when possible (closest to the seed); continuous joints are wrapped
-to (−π, π].
-
-UR-type 6R arms (three parallel axes, intersecting last two)
+"""UR-type 6R arms (three parallel axes, intersecting last two)
 ------------------------------------------------------------
 Six revolute joints whose axes 2, 3, 4 are parallel (direction h) and whose axes 5 and 6
 intersect (the UR family). With the product of exponentials at q = 0, T(q) = E1⋯E6·M
@@ -46,182 +19,25 @@ Up to 8 candidates, moved into the limits (±2π limits admit two values per ang
 closest to the seed is used), sorted by distance to the seed and verified by FK. Near a
 singularity (wrist: q5 ≈ 0; shoulder: c_d on axis 1; elbow stretched) a subproblem loses
 its solution or becomes ill-conditioned; the numeric solver then takes over.
+
+The Python form (:func:`ur_solutions`) and its compiled copy (:func:`ur_candidates_compiled`,
+Numba; same steps, same order) are kept side by side so that one reads against the other.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
 
-from app.kinematics.ik_kernel import available as _compiled_available
+from app.kinematics.analytic_ik.planar2 import PARALLEL, REACH, Planar2, planar2_solutions
+from app.kinematics.analytic_ik.subproblems import rot, sp1, sp4, unit
+from app.kinematics.ik_kernel import available as compiled_available
 from app.kinematics.ik_kernel import jit
 from app.kinematics.models import RobotModel
-
-if TYPE_CHECKING:
-    from app.kinematics.ik import Chain
-
-_PARALLEL = 1e-9  # |a1 × a2| below this: parallel axes
-_REACH = 1e-12  # slack on |c2| ≤ 1 for targets on the workspace boundary
-
-
-@dataclass(frozen=True, slots=True)
-class Planar2:
-    """Geometry of a planar 2-link chain at q = 0 (world frame)."""
-
-    origin: np.ndarray  # a point of axis 1
-    u: np.ndarray  # in-plane basis: u, v = a1 × u
-    v: np.ndarray
-    r1: np.ndarray  # 2-D, axis 1 → axis 2
-    r2: np.ndarray  # 2-D, axis 2 → frame origin
-    sign2: float  # +1 if axis 2 is parallel to axis 1, −1 if antiparallel
-
-    @property
-    def l1(self) -> float:
-        return float(np.hypot(*self.r1))
-
-    @property
-    def l2(self) -> float:
-        return float(np.hypot(*self.r2))
-
-
-def _rot2(theta: float, r: np.ndarray) -> np.ndarray:
-    c, s = math.cos(theta), math.sin(theta)
-    return np.array([c * r[0] - s * r[1], s * r[0] + c * r[1]])
-
-
-def planar2_geometry(robot: RobotModel, active: np.ndarray, frame_id: int) -> Planar2 | None:
-    """The :class:`Planar2` description of a chain, or ``None`` if it is not one."""
-    if len(active) != 2:
-        return None
-    joints = [robot.joints[i] for i in active]
-    if any(j.type == "prismatic" for j in joints):
-        return None
-    for j in joints:
-        if robot.model.joints[j.pin_id].nv != 1:
-            return None
-    model = robot.model
-    data = model.createData()
-    pin.forwardKinematics(model, data, robot.to_pin(np.zeros(robot.n)))
-    f0 = pin.updateFramePlacement(model, data, frame_id).translation.copy()
-    axes, points = [], []
-    for j in joints:
-        M = data.oMi[j.pin_id]
-        a = np.asarray(j.axis, dtype=float)
-        a = a / np.linalg.norm(a)
-        axes.append(M.rotation @ a)
-        points.append(M.translation.copy())
-    a1, a2 = axes
-    if np.linalg.norm(np.cross(a1, a2)) > _PARALLEL:
-        return None
-    # Plane basis: u ⟂ a1 (any), v = a1 × u.
-    helper = np.array([1.0, 0.0, 0.0]) if abs(a1[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    u = np.cross(helper, a1)
-    u /= np.linalg.norm(u)
-    v = np.cross(a1, u)
-    o = points[0]
-
-    def proj(x: np.ndarray) -> np.ndarray:
-        d = x - o
-        return np.array([d @ u, d @ v])
-
-    r1 = proj(points[1])
-    r2 = proj(f0) - r1
-    if np.hypot(*r1) < 1e-12 or np.hypot(*r2) < 1e-12:
-        return None
-    return Planar2(o, u, v, r1, r2, float(np.sign(a1 @ a2)))
-
-
-def planar2_solutions(geo: Planar2, point: np.ndarray) -> list[tuple[float, float]]:
-    """Both elbow solutions (q1, q2) placing the frame origin over ``point`` (may be [])."""
-    d = point - geo.origin
-    t = np.array([d @ geo.u, d @ geo.v])
-    l1, l2 = geo.l1, geo.l2
-    c2 = (t @ t - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
-    if abs(c2) > 1.0 + _REACH:
-        return []
-    c2 = min(1.0, max(-1.0, c2))
-    beta = math.atan2(geo.r2[1], geo.r2[0]) - math.atan2(geo.r1[1], geo.r1[0])
-    out = []
-    for phi in (math.acos(c2), -math.acos(c2)):
-        w = geo.r1 + _rot2(phi - beta, geo.r2)
-        q1 = math.atan2(t[1], t[0]) - math.atan2(w[1], w[0])
-        q2 = geo.sign2 * (phi - beta)
-        out.append((q1, q2))
-    return out
-
-
-def into_limits(q: float, lower: float, upper: float, seed: float) -> float:
-    """``q`` shifted by a multiple of 2π into [lower, upper] (closest to ``seed``).
-
-    Continuous joints (infinite limits) are wrapped to [−π, π). When no shift fits, ``q``
-    wrapped to [−π, π) is returned (and fails the caller's limit check). A non-finite ``q``
-    (a closed form on overflowing geometry) is returned as is: FK verification rejects it.
-    """
-    if not math.isfinite(q):
-        return q
-    if not (math.isfinite(lower) and math.isfinite(upper)):
-        return (q + math.pi) % (2.0 * math.pi) - math.pi
-    two_pi = 2.0 * math.pi
-    k_lo = math.ceil((lower - q) / two_pi - 1e-12)
-    k_hi = math.floor((upper - q) / two_pi + 1e-12)
-    if k_lo > k_hi:
-        return (q + math.pi) % two_pi - math.pi
-    options = [min(upper, max(lower, q + k * two_pi)) for k in range(k_lo, k_hi + 1)]
-    return min(options, key=lambda x: abs(x - seed))
-
-
-def _unit(x: np.ndarray) -> np.ndarray:
-    return x / np.linalg.norm(x)
-
-
-def _rot(k: np.ndarray, theta: float) -> np.ndarray:
-    """Rotation matrix about unit axis k by theta (Rodrigues)."""
-    return pin.exp3(k * theta)
-
-
-def sp1(k: np.ndarray, a: np.ndarray, b: np.ndarray, K: np.ndarray | None = None) -> float:
-    """Subproblem 1: the angle θ with Rot(k, θ)·a ∥ b in the plane normal to k.
-
-    With a⊥, b⊥ the projections on that plane: θ = atan2(k·(a⊥ × b⊥), a⊥·b⊥), where
-    k·(a⊥ × b⊥) = k·(a × b) = (k × a)·b and a⊥·b⊥ = a·b − (k·a)(k·b). ``K`` is the
-    cross-product matrix of k (precomputed by callers; np.cross is slow on 3-vectors).
-    """
-    if K is None:
-        K = pin.skew(k)
-    return math.atan2((K @ a) @ b, a @ b - (k @ a) * (k @ b))
-
-
-def sp4(
-    h: np.ndarray, k: np.ndarray, p: np.ndarray, d: float, K: np.ndarray | None = None
-) -> list[float]:
-    """Subproblem 4: all θ with hᵀ·Rot(k, θ)·p = d (0, 1 or 2 angles).
-
-    Rot(k, θ)p = (k·p)k + cos θ (p − (k·p)k) + sin θ (k × p), so with
-    A = hᵀ(p − (k·p)k), B = hᵀ(k × p), C = (k·p)(h·k): A cos θ + B sin θ = d − C, i.e.
-    θ = atan2(B, A) ± acos((d − C)/√(A² + B²)) when the right side is in [−1, 1].
-    """
-    if K is None:
-        K = pin.skew(k)
-    kp = K @ p
-    par = (k @ p) * k
-    A = h @ (p - par)
-    B = h @ kp
-    C = h @ par
-    r = math.hypot(A, B)
-    if r < 1e-12:
-        return []
-    x = (d - C) / r
-    if abs(x) > 1.0 + 1e-9:
-        return []
-    x = min(1.0, max(-1.0, x))
-    phi = math.atan2(B, A)
-    a = math.acos(x)
-    return [phi + a] if a < 1e-12 else [phi + a, phi - a]
 
 
 @dataclass(frozen=True, slots=True)
@@ -262,12 +78,12 @@ def ur_geometry(robot: RobotModel, active: np.ndarray, frame_id: int) -> URType 
     data = model.createData()
     pin.forwardKinematics(model, data, robot.to_pin(np.zeros(robot.n)))
     M = pin.updateFramePlacement(model, data, frame_id).copy()
-    w = np.array([data.oMi[j.pin_id].rotation @ _unit(np.asarray(j.axis, float)) for j in joints])
+    w = np.array([data.oMi[j.pin_id].rotation @ unit(np.asarray(j.axis, float)) for j in joints])
     p = np.array([data.oMi[j.pin_id].translation for j in joints])
     h = w[1]
     s = np.ones(6)
     for i in (2, 3):
-        if np.linalg.norm(np.cross(w[i], h)) > _PARALLEL:
+        if np.linalg.norm(np.cross(w[i], h)) > PARALLEL:
             return None
         s[i] = float(np.sign(w[i] @ h))
     if np.linalg.norm(np.cross(w[0], h)) < 1e-6 or np.linalg.norm(np.cross(w[4], h)) < 1e-6:
@@ -276,7 +92,7 @@ def ur_geometry(robot: RobotModel, active: np.ndarray, frame_id: int) -> URType 
     if c0 is None:
         return None
     helper = np.array([1.0, 0.0, 0.0]) if abs(h[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    u = _unit(np.cross(helper, h))
+    u = unit(np.cross(helper, h))
     v = np.cross(h, u)
 
     def proj(x: np.ndarray) -> np.ndarray:
@@ -315,7 +131,7 @@ def ur_solutions(
     if seed is not None:
         q1s = _nearest_first(q1s, seed[0])
     for q1 in q1s:
-        R1 = _rot(w[0], q1)
+        R1 = rot(w[0], q1)
         R1h = R1 @ h
         RdT_R1h = Rd.T @ R1h
         q5s = sp4(h, w[4], w[5], R1h @ Rd @ w[5], K[4])
@@ -323,12 +139,12 @@ def ur_solutions(
             q5s = _nearest_first(q5s, seed[4])
         arm_base = p[0] + R1.T @ (c_d - p[0])
         for q5 in q5s:
-            R5 = _rot(w[4], q5)
+            R5 = rot(w[4], q5)
             R5T = R5.T
             q6 = sp1(w[5], RdT_R1h, R5T @ h, K[5])
-            Rth = R1.T @ Rd @ _rot(w[5], -q6) @ R5T
+            Rth = R1.T @ Rd @ rot(w[5], -q6) @ R5T
             theta = sp1(h, u, Rth @ u, K[1])
-            wrist = arm_base - _rot(h, theta) @ c0_p4
+            wrist = arm_base - rot(h, theta) @ c0_p4
             elbows = planar2_solutions(geo.arm, wrist)
             if seed is not None and len(elbows) == 2:
                 elbows.sort(key=lambda e: abs(math.remainder(e[1] - seed[2], 2.0 * math.pi)))
@@ -441,7 +257,7 @@ def _ur_all(  # pragma: no cover
             t0 = d @ u
             t1 = d @ v
             c2 = (t0 * t0 + t1 * t1 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
-            if abs(c2) > 1.0 + _REACH:
+            if abs(c2) > 1.0 + REACH:
                 continue
             c2 = min(1.0, max(-1.0, c2))
             ac = math.acos(c2)
@@ -516,7 +332,7 @@ def ur_candidates_compiled(
 def warm_up() -> None:
     """Compile the UR closed form for the argument types :func:`prepare` passes (C-ordered
     float64 arrays), from dummy geometry."""
-    if not _compiled_available():
+    if not compiled_available():
         return
     z3, e3 = np.zeros(3), np.eye(3)
     _ur_all(
@@ -524,51 +340,3 @@ def warm_up() -> None:
         z3, z3, z3, np.ones(2), np.ones(2), 1.0, e3, z3, np.zeros(6), np.empty((8, 6)),
     )  # fmt: skip
     _into_limits_nb(np.zeros((8, 6)), 0, np.zeros(6), np.zeros(6), np.zeros(6))
-
-
-def prepare(robot: RobotModel, ch: Chain) -> tuple[URType | None, Planar2 | None]:
-    """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
-    for its argument types, so that no query's budget pays for either."""
-    fid = ch.frame_id
-    forms = ch.closed_form = (
-        ur_geometry(robot, ch.active, fid),
-        planar2_geometry(robot, ch.active, fid),
-    )
-    ur = forms[0]
-    if ur is not None and _compiled_available():
-        seed = np.ascontiguousarray(robot.mid_range()[ch.active])
-        ur_candidates_compiled(ur, ur.M, seed, robot.lower[ch.active], robot.upper[ch.active])
-    return forms
-
-
-def candidates(
-    robot: RobotModel, ch: Chain, target: pin.SE3, mode: str, seed: np.ndarray
-) -> Iterator[np.ndarray] | None:
-    """Closed-form candidates for the active joints of ``ch`` (an ``ik.Chain``).
-
-    ``None`` when no closed form applies to this chain and mode; otherwise an iterator over
-    candidate configurations of the active joints, moved into the joint limits, roughly
-    nearest to the seed first (it may be empty: the closed form proves the target
-    unreachable).
-    """
-    active = ch.active
-    forms = ch.closed_form
-    if forms is None:  # first use: detect once per chain (idempotent, so races are benign)
-        forms = prepare(robot, ch)
-    ur, planar = forms
-    if ur is None and planar is None:
-        return None
-    lo, hi = ch.lower, ch.upper  # the limits, within ±MAX_JOINT_VALUE
-    s = seed[active]
-    raw: Iterable[np.ndarray] | None = None
-    if ur is not None and mode == "pose" and _compiled_available():
-        return iter(ur_candidates_compiled(ur, target, np.ascontiguousarray(s), lo, hi))
-    if ur is not None and mode == "pose":
-        raw = ur_solutions(ur, target, s)
-    elif planar is not None and mode != "orientation":
-        raw = [np.array(q) for q in planar2_solutions(planar, target.translation)]
-    if raw is None:
-        return None
-    return (
-        np.array([into_limits(float(x), lo[i], hi[i], s[i]) for i, x in enumerate(q)]) for q in raw
-    )

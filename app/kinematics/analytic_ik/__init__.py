@@ -1,0 +1,95 @@
+"""Closed-form inverse kinematics where a chain's geometry admits one.
+
+The numeric solver (:mod:`app.kinematics.ik`) asks :func:`candidates` first; a closed form
+returns *every* candidate configuration of the moving joints, and the solver verifies each
+one by forward kinematics (mode, tolerances, limits, ``accept``) before reporting it, so a
+closed form can only add answers, never wrong ones.
+
+- Planar 2-link (RR) arms: :mod:`app.kinematics.analytic_ik.planar2`.
+- UR-type 6R arms (three parallel axes, intersecting last two):
+  :mod:`app.kinematics.analytic_ik.ur`, built on the Paden–Kahan subproblems of
+  :mod:`app.kinematics.analytic_ik.subproblems`.
+
+This module detects which closed form a chain admits (:func:`prepare`) and returns its
+candidates (:func:`candidates`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING
+
+import numpy as np
+import pinocchio as pin
+
+from app.kinematics.analytic_ik import ur
+from app.kinematics.analytic_ik.planar2 import (
+    Planar2,
+    into_limits,
+    planar2_geometry,
+    planar2_solutions,
+)
+from app.kinematics.analytic_ik.ur import (
+    URType,
+    ur_candidates_compiled,
+    ur_geometry,
+    ur_solutions,
+)
+from app.kinematics.ik_kernel import available as _compiled_available
+from app.kinematics.models import RobotModel
+
+if TYPE_CHECKING:
+    from app.kinematics.ik import Chain
+
+
+def warm_up() -> None:
+    """Compile the closed forms' compiled parts (the UR one: :func:`ur.warm_up`)."""
+    ur.warm_up()
+
+
+def prepare(robot: RobotModel, ch: Chain) -> tuple[URType | None, Planar2 | None]:
+    """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
+    for its argument types, so that no query's budget pays for either."""
+    fid = ch.frame_id
+    forms = ch.closed_form = (
+        ur_geometry(robot, ch.active, fid),
+        planar2_geometry(robot, ch.active, fid),
+    )
+    ur = forms[0]
+    if ur is not None and _compiled_available():
+        seed = np.ascontiguousarray(robot.mid_range()[ch.active])
+        ur_candidates_compiled(ur, ur.M, seed, robot.lower[ch.active], robot.upper[ch.active])
+    return forms
+
+
+def candidates(
+    robot: RobotModel, ch: Chain, target: pin.SE3, mode: str, seed: np.ndarray
+) -> Iterator[np.ndarray] | None:
+    """Closed-form candidates for the active joints of ``ch`` (an ``ik.Chain``).
+
+    ``None`` when no closed form applies to this chain and mode; otherwise an iterator over
+    candidate configurations of the active joints, moved into the joint limits, roughly
+    nearest to the seed first (it may be empty: the closed form proves the target
+    unreachable).
+    """
+    active = ch.active
+    forms = ch.closed_form
+    if forms is None:  # first use: detect once per chain (idempotent, so races are benign)
+        forms = prepare(robot, ch)
+    ur, planar = forms
+    if ur is None and planar is None:
+        return None
+    lo, hi = ch.lower, ch.upper  # the limits, within ±MAX_JOINT_VALUE
+    s = seed[active]
+    raw: Iterable[np.ndarray] | None = None
+    if ur is not None and mode == "pose" and _compiled_available():
+        return iter(ur_candidates_compiled(ur, target, np.ascontiguousarray(s), lo, hi))
+    if ur is not None and mode == "pose":
+        raw = ur_solutions(ur, target, s)
+    elif planar is not None and mode != "orientation":
+        raw = [np.array(q) for q in planar2_solutions(planar, target.translation)]
+    if raw is None:
+        return None
+    return (
+        np.array([into_limits(float(x), lo[i], hi[i], s[i]) for i, x in enumerate(q)]) for q in raw
+    )
