@@ -8,21 +8,9 @@ import pytest
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.rotations import quaternion_to_matrix, rpy_to_matrix
+from tests.helpers import problem
 
 PANDA_READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
-
-
-def problem(resp, status: int, field: str | None = None) -> dict:
-    """Assert an RFC 9457 problem body with the given status (and field)."""
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    assert {"type", "title", "status", "detail"} <= body.keys()
-    assert body["status"] == status
-    if field is not None:
-        assert body["field"] == field, body
-        assert field in body["detail"]
-    return body
 
 
 def post_raw(client, url: str, raw: str):
