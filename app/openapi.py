@@ -29,7 +29,7 @@ from fastapi import FastAPI
 from fastapi.routing import APIRoute, iter_route_contexts
 from pydantic import BaseModel
 
-from app.api import common
+from app.api.body import EXTRA_SCHEMAS
 from app.api.errors import Problem
 from app.api.security import require_token
 
@@ -81,7 +81,7 @@ def document_errors(
 ) -> dict[str, Any]:
     """Rewrite ``schema`` in place (see the module docstring); returns it.
 
-    ``extra_models`` are added to the components (see :data:`app.api.common.EXTRA_SCHEMAS`).
+    ``extra_models`` are added to the components (see :data:`app.api.body.EXTRA_SCHEMAS`).
     """
     problem_ref = {"$ref": _REF + "Problem"}
     validation_ref = {"$ref": _REF + "HTTPValidationError"}
@@ -137,8 +137,7 @@ def install(app: FastAPI) -> None:
 
     def openapi() -> dict[str, Any]:
         if app.openapi_schema is None:
-            extra = getattr(common, "EXTRA_SCHEMAS", ())
-            app.openapi_schema = document_errors(generate(), guarded_operations(app), extra)
+            app.openapi_schema = document_errors(generate(), guarded_operations(app), EXTRA_SCHEMAS)
         return app.openapi_schema
 
     app.openapi = openapi  # type: ignore[method-assign]

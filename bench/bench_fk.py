@@ -32,8 +32,9 @@ import orjson
 import pinocchio as pin
 from fastapi import FastAPI
 
-from app.api.common import ORJSONResponse, RobotId
 from app.api.fk import FKRequest
+from app.api.responses import ORJSONResponse
+from app.api.schemas import RobotId
 from app.registry import Registry
 from bench._http import ensure_wrk, load, serve
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.test_production import serve_app
+from tests.helpers import serve
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = "denavit_client"
@@ -60,7 +60,7 @@ def generated(tmp_path_factory) -> Iterator[object]:
 @pytest.fixture(scope="module")
 def api(generated, tmp_path_factory):
     """(client, module namespace) against a live server."""
-    with serve_app(tmp_path_factory.mktemp("client-data") / "data") as server:
+    with serve(tmp_path_factory.mktemp("client-data") / "data", settings={}) as server:
         client = generated.Client(base_url=server.url, timeout=60.0)
         with client:
             yield client

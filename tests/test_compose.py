@@ -13,7 +13,7 @@ from pathlib import Path
 import yaml
 
 from app.settings import Settings
-from tests.test_dockerfile import FINAL, exec_form
+from tests.dockerfile import FINAL, exec_form
 
 ROOT = Path(__file__).resolve().parents[1]
 COMPOSE = yaml.safe_load((ROOT / "compose.yaml").read_text())

@@ -2,12 +2,8 @@
 
 from __future__ import annotations
 
-import os
 import re
 import signal
-import subprocess
-import sys
-import tempfile
 import threading
 import time
 from pathlib import Path
@@ -15,7 +11,7 @@ from pathlib import Path
 import httpx
 import pytest
 
-from tests.live import ROOT, free_port, serve
+from tests.helpers import serve
 
 
 def _local_port(resp: httpx.Response) -> int:
@@ -30,9 +26,9 @@ def test_a_500_leaves_the_keep_alive_connection_usable(tmp_path: Path) -> None:
     ``Connection: close``; the client's next request on it met a reset (or, here, httpx
     noticed the close and opened a new connection: another local port).
     """
-    app = "tests.live_apps:make_app_with_a_bug"
-    with serve(tmp_path / "data", "--factory", "--workers", "2", app=app) as url:
-        with httpx.Client(base_url=url, timeout=60) as client:
+    app = "tests.helpers:make_app_with_a_bug"
+    with serve(tmp_path / "data", "--factory", "--workers", "2", app=app) as server:
+        with httpx.Client(base_url=server.url, timeout=60) as client:
             for _ in range(3):
                 bug = client.get("/test/bug")
                 assert bug.status_code == 500
@@ -65,31 +61,13 @@ def test_sigterm_answers_a_request_cut_off_at_the_graceful_timeout_with_a_503(
     The request cannot finish in time: uvicorn cancels it and the client gets a 503
     problem+json with ``Connection: close`` (before: uvicorn's plain-text 500).
     """
-    port = free_port()
-    env = {
-        **os.environ,
-        "DENAVIT_HOST": "127.0.0.1",
-        "DENAVIT_PORT": str(port),
-        "DENAVIT_DATA_DIR": str(tmp_path / "data"),
-        "DENAVIT_GRACEFUL_TIMEOUT_S": "1",
-        "DENAVIT_WORKERS": "1",  # the /metrics in-flight gauge below is per worker
-        "DENAVIT_ACCESS_LOG": "false",
+    settings = {
+        "graceful_timeout_s": "1",
+        "workers": "1",  # the /metrics in-flight gauge below is per worker
+        "access_log": "false",
     }
-    url = f"http://127.0.0.1:{port}"
-    log = tempfile.TemporaryFile()
-    proc = subprocess.Popen([sys.executable, "-m", "app"], cwd=ROOT, env=env, stderr=log)
-    try:
-        deadline = time.monotonic() + 120
-        while True:
-            assert proc.poll() is None, "server exited"
-            try:
-                if httpx.get(url + "/health", timeout=1).status_code == 200:
-                    break
-            except httpx.TransportError:
-                pass
-            assert time.monotonic() < deadline, "server did not start"
-            time.sleep(0.1)
-
+    with serve(tmp_path / "data", settings=settings) as server:
+        url, proc = server.url, server.proc
         # 8 unreachable targets (10 m away) at 1 s each: the batch runs ~8 s.
         far = {"position": [10.0, 0.0, 0.0], "orientation": [0.0, 0.0, 0.0, 1.0]}
         body = {"targets": [far] * 8, "timeout_ms": 1000, "chain_seeds": False}
@@ -122,11 +100,6 @@ def test_sigterm_answers_a_request_cut_off_at_the_graceful_timeout_with_a_503(
         assert int(resp.headers["retry-after"]) >= 1
         assert resp.headers["x-request-id"]
         proc.wait(timeout=120)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        log.close()
 
 
 @pytest.fixture(autouse=True)

@@ -29,8 +29,7 @@ from app.metrics_shm import (
     remove_stale_instances,
 )
 from app.observability import ObservabilityMiddleware
-from tests.live import serve
-from tests.test_production import parse_metrics
+from tests.helpers import parse_metrics, serve
 
 ROBOTS_200 = 'denavit_http_requests_total{method="GET",route="/robots",status="200"}'
 ROBOTS_COUNT = 'denavit_http_request_duration_seconds_count{method="GET",route="/robots"}'
@@ -78,7 +77,8 @@ def scrape_thread(url: str, n: int) -> list[tuple[int, dict[str, float]]]:
 
 def test_every_scrape_of_two_workers_reports_the_service_total(tmp_path) -> None:
     n = 60
-    with serve(tmp_path / "data", "--workers", "2") as url:
+    with serve(tmp_path / "data", "--workers", "2") as server:
+        url = server.url
         with ThreadPoolExecutor(max_workers=4) as pool:
             # new connections: the kernel hands them to both workers
             codes = list(pool.map(lambda _: httpx.get(url + "/robots", timeout=30), range(n)))

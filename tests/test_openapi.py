@@ -12,7 +12,7 @@ import sys
 from collections.abc import Iterator
 from pathlib import Path
 
-from tests.test_production import write_routes
+from tests.helpers import write_routes
 
 COMMITTED = Path(__file__).resolve().parents[1] / "docs" / "openapi.json"
 

@@ -15,7 +15,7 @@ from pathlib import Path
 import httpx
 import pytest
 
-from tests.live import serve
+from tests.helpers import serve
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="walks /proc for the process tree"
@@ -81,7 +81,7 @@ def cmdline(pid: int) -> str:
 
 
 def server_pid(url: str) -> int:
-    """The pid of the ``uvicorn`` process started by tests.live.serve for ``url``."""
+    """The pid of the ``uvicorn`` process started by tests.helpers.serve for ``url``."""
     port = url.rsplit(":", 1)[1]
     for name in os.listdir("/proc"):
         if name.isdigit() and f"--port {port} " in cmdline(int(name)) + " ":
@@ -131,7 +131,8 @@ def kill_all(pids: set[int]) -> None:
 def test_killing_the_build_owner_leaves_no_process(tmp_path, workers) -> None:
     data = tmp_path / "data"
     args = ("--workers", "2") if workers == 2 else ()
-    with serve(data, *args) as url:
+    with serve(data, *args) as server:
+        url = server.url
         owner, tree = start_long_build(url, data)
         assert owner == server_pid(url) if workers == 1 else owner in descendants(server_pid(url))
         os.kill(owner, signal.SIGKILL)
@@ -144,7 +145,8 @@ def test_killing_the_build_owner_leaves_no_process(tmp_path, workers) -> None:
 
 def test_killing_the_supervisor_leaves_no_process(tmp_path) -> None:
     data = tmp_path / "data"
-    with serve(data, "--workers", "2") as url:
+    with serve(data, "--workers", "2") as server:
+        url = server.url
         master = server_pid(url)
         start_long_build(url, data)
         tree = descendants(master)

@@ -5,14 +5,10 @@ from __future__ import annotations
 
 import contextlib
 import hmac
-import inspect
 import os
 import re
+import secrets
 import signal
-import socket
-import subprocess
-import sys
-import tempfile
 import threading
 import time
 from collections.abc import Iterator
@@ -22,109 +18,20 @@ from pathlib import Path
 import httpx
 import orjson
 import pytest
-from fastapi import FastAPI
-from fastapi.routing import APIRoute, iter_route_contexts
 from fastapi.testclient import TestClient
 from starlette.middleware.base import BaseHTTPMiddleware
 
-from app.api.common import offload
-from app.api.security import require_token
+from app.api.offload import offload
 from app.main import create_app
 from app.metrics import METRICS, record_ik
 from app.settings import Settings
+from tests.helpers import api_routes, parse_metrics, serve, write_routes
 
 ROOT = Path(__file__).resolve().parents[1]
 TOKEN = "test-token-0123456789"
 
 # ---------------------------------------------------------------------------------------------
 # Helpers
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-class Server:
-    """A server process on loopback, its URL and its log file."""
-
-    def __init__(self, proc: subprocess.Popen[bytes], url: str, log: Path) -> None:
-        self.proc, self.url, self.log = proc, url, log
-
-    def log_lines(self) -> list[dict]:
-        out = []
-        for line in self.log.read_text().splitlines():
-            with contextlib.suppress(orjson.JSONDecodeError):
-                out.append(orjson.loads(line))
-        return out
-
-
-@contextlib.contextmanager
-def start_server(
-    cmd: list[str], env: dict[str, str], port: int, cwd: Path = ROOT, timeout: float = 90
-) -> Iterator[Server]:
-    """Run ``cmd`` (a server on 127.0.0.1:``port``) until /health answers; stop it after."""
-    log_dir = Path(tempfile.mkdtemp(prefix="denavit-server-"))
-    log_path = log_dir / "server.log"
-    with open(log_path, "wb") as log:
-        proc = subprocess.Popen(cmd, cwd=cwd, env=env, stderr=log, stdout=log)
-    url = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + timeout
-        while True:
-            if proc.poll() is not None:
-                raise RuntimeError(f"server exited {proc.returncode}: {log_path.read_text()}")
-            with contextlib.suppress(httpx.TransportError):
-                if httpx.get(url + "/health", timeout=2).status_code == 200:
-                    break
-            if time.monotonic() > deadline:
-                raise RuntimeError(f"server did not start: {log_path.read_text()[-3000:]}")
-            time.sleep(0.1)
-        yield Server(proc, url, log_path)
-    finally:
-        if proc.poll() is None:
-            proc.send_signal(signal.SIGTERM)
-            try:
-                proc.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
-
-
-@contextlib.contextmanager
-def serve_app(data_dir: Path, **settings: str) -> Iterator[Server]:
-    """``python -m app`` (the entry of ``make run`` and the image) on a free loopback port."""
-    port = free_port()
-    env = {k: v for k, v in os.environ.items() if not k.upper().startswith("DENAVIT_")}
-    env |= {"DENAVIT_HOST": "127.0.0.1", "DENAVIT_PORT": str(port)}
-    env |= {"DENAVIT_DATA_DIR": str(data_dir)}
-    env |= {f"DENAVIT_{k.upper()}": v for k, v in settings.items()}
-    with start_server([sys.executable, "-m", "app"], env, port) as server:
-        yield server
-
-
-def _uses(dependant, fn) -> bool:
-    return any(d.call is fn or _uses(d, fn) for d in dependant.dependencies)
-
-
-def api_routes(app: FastAPI) -> list[tuple[str, APIRoute]]:
-    """(full path template, route) of every documented API route."""
-    return [
-        (rc.path, rc.original_route)
-        for rc in iter_route_contexts(app.routes)
-        if isinstance(rc.original_route, APIRoute) and rc.original_route.include_in_schema
-    ]
-
-
-def write_routes(app: FastAPI) -> list[tuple[str, str, APIRoute]]:
-    """(method, path, route) of every route guarded by ``require_token``."""
-    return [
-        (m, path, r)
-        for path, r in api_routes(app)
-        if _uses(r.dependant, require_token)
-        for m in sorted(r.methods)
-    ]
 
 
 def fill(path: str, robot: str = "panda") -> str:
@@ -219,9 +126,29 @@ def test_without_a_configured_token_writes_need_none(client, app) -> None:
         assert r.status_code not in (401, 403, 500), (method, path, r.text)
 
 
-def test_token_comparison_is_constant_time() -> None:
-    assert "hmac.compare_digest" in inspect.getsource(require_token)
-    assert hmac.compare_digest(b"a", b"a")
+def test_token_comparison_is_constant_time(guarded_app, monkeypatch) -> None:
+    """The guard decides with a constant-time comparison of the presented and expected
+    token bytes (not ``==``, whose time leaks the length of the matching prefix)."""
+    calls: list[tuple[bytes, bytes]] = []
+    verdict: list[bool] = []
+
+    def spy(a, b) -> bool:
+        calls.append((bytes(a), bytes(b)))
+        return verdict[0] if verdict else real(a, b)
+
+    real = hmac.compare_digest
+    monkeypatch.setattr(hmac, "compare_digest", spy)
+    monkeypatch.setattr(secrets, "compare_digest", spy)
+    url = "/robots/no_such_robot"
+    wrong = TOKEN[:-1] + "x"
+    assert guarded_app.delete(url, headers={"authorization": f"Bearer {wrong}"}).status_code == 403
+    assert calls == [(wrong.encode(), TOKEN.encode())]
+    calls.clear()
+    assert guarded_app.delete(url, headers={"authorization": f"Bearer {TOKEN}"}).status_code == 404
+    assert calls == [(TOKEN.encode(), TOKEN.encode())]
+    # the comparison's answer is the guard's verdict
+    verdict.append(False)
+    assert guarded_app.delete(url, headers={"authorization": f"Bearer {TOKEN}"}).status_code == 403
 
 
 # ---------------------------------------------------------------------------------------------
@@ -420,22 +347,6 @@ def test_logs_inside_a_request_and_in_the_pool_carry_its_id(tmp_path, capsys) ->
 # ---------------------------------------------------------------------------------------------
 # Metrics
 
-_SAMPLE = re.compile(
-    r'^([a-zA-Z_:][a-zA-Z0-9_:]*)(\{(?:[a-zA-Z_]\w*="(?:[^"\\]|\\.)*",?)*\})? (\S+)$'
-)
-
-
-def parse_metrics(text: str) -> dict[str, float]:
-    """Sample name with labels → value; every line must be a comment or a valid sample."""
-    samples = {}
-    for line in text.splitlines():
-        if line.startswith("# HELP ") or line.startswith("# TYPE "):
-            continue
-        m = _SAMPLE.match(line)
-        assert m, f"not Prometheus text: {line!r}"
-        samples[m[1] + (m[2] or "")] = float(m[3])
-    return samples
-
 
 def test_metrics_count_requests_per_route_template(client) -> None:
     fk = 'method="POST",route="/robots/{robot_id}/fk"'
@@ -506,7 +417,7 @@ SLOW_IK = {"targets": [{"position": [3.0, 3.0, 3.0]}] * 3, "mode": "position", "
 
 
 def test_health_answers_while_long_batches_run(tmp_path) -> None:
-    with serve_app(tmp_path / "data", access_log="false") as server:
+    with serve(tmp_path / "data", settings={"access_log": "false"}) as server:
         with ThreadPoolExecutor(max_workers=4) as pool:
             slow = [
                 pool.submit(
@@ -528,7 +439,7 @@ def test_health_answers_while_long_batches_run(tmp_path) -> None:
 
 
 def test_sigterm_lets_in_flight_requests_finish(tmp_path) -> None:
-    with serve_app(tmp_path / "data", graceful_timeout_s="60") as server:
+    with serve(tmp_path / "data", settings={"graceful_timeout_s": "60"}) as server:
         result: dict[str, httpx.Response] = {}
 
         def call() -> None:
@@ -560,7 +471,7 @@ def test_sigterm_lets_in_flight_requests_finish(tmp_path) -> None:
 
 
 def test_live_server_refuses_big_bodies(tmp_path) -> None:
-    with serve_app(tmp_path / "data", max_body_bytes="4096") as server:
+    with serve(tmp_path / "data", settings={"max_body_bytes": "4096"}) as server:
         with httpx.Client(base_url=server.url, timeout=30) as c:
             big = c.post(
                 "/robots/panda/fk/batch",

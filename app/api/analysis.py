@@ -16,23 +16,13 @@ import numpy as np
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
-from app.api.common import (
-    ConfigurationIn,
-    Finite,
-    JointValue,
-    ORJSONResponse,
-    RobotId,
-    Schema,
-    body_schema,
-    finite_matrix,
-    load_robot,
-    offload,
-    parse_json,
-    validate_body,
-)
-from app.api.deps import RegistryDep
+from app.api.body import body_schema, configurations, decode_body
+from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
 from app.api.jacobian import REFERENCE_DOC
+from app.api.offload import offload
+from app.api.responses import ORJSONResponse
+from app.api.schemas import ConfigurationIn, Finite, JointValue, RobotId, Schema
 from app.kinematics.analysis import (
     DEFAULT_RELATIVE_TOLERANCE,
     Part,
@@ -45,7 +35,6 @@ from app.kinematics.analysis import (
 )
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.jacobian import Reference
-from app.kinematics.models import check_joint_values
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["analysis"])
 
@@ -218,26 +207,12 @@ async def compute_manipulability(
     return ORJSONResponse(_manip_json(robot.id, frame, body.reference, q, res))
 
 
-def _batch_body(raw: bytes, n_joints: int) -> tuple[ManipulabilityBatchRequest, np.ndarray]:
-    """Decode a batch body: the configurations through NumPy when they are plain numbers of
-    the right width (fast path), else full validation naming the offending element."""
-    obj = parse_json(raw)
-    if isinstance(obj, dict) and "configurations" in obj:
-        qs = finite_matrix(obj["configurations"], n_joints)
-        if qs is not None and b"true" not in raw and b"false" not in raw:
-            body = validate_body(ManipulabilityBatchRequest, {**obj, "configurations": []})
-            check_joint_values(qs, "configurations")
-            return body, qs
-    body = validate_body(ManipulabilityBatchRequest, obj)
-    for i, row in enumerate(body.configurations):
-        if len(row) != n_joints:
-            raise InvalidInputError(
-                f"expected {n_joints} values (one per joint), got {len(row)}",
-                f"configurations.{i}",
-            )
-    qs = np.array(body.configurations, dtype=float).reshape(-1, n_joints)
-    check_joint_values(qs, "configurations")
-    return body, qs
+def _batch_body(
+    raw: bytes, n_joints: int, limit: int
+) -> tuple[ManipulabilityBatchRequest, np.ndarray]:
+    """Decode a batch body: the task options and the checked configurations."""
+    body, rows = decode_body(raw, ManipulabilityBatchRequest, {"configurations": n_joints})
+    return body, configurations(rows["configurations"], n_joints, limit)
 
 
 @router.post(
@@ -253,13 +228,8 @@ async def compute_manipulability_batch(
     """Scalar manipulability measures for many configurations (computed off the event loop)."""
     robot = await load_robot(reg, robot_id)
     raw = await request.body()
-    body, qs = await offload(_batch_body, raw, robot.n)
     limit = request.app.state.settings.max_batch
-    n = qs.shape[0]
-    if n > limit:
-        raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
-    if n == 0:
-        raise InvalidInputError("give at least one configuration", "configurations")
+    body, qs = await offload(_batch_body, raw, robot.n, limit)
     frame = body.frame or robot.ee_frame
     out = await offload(
         manipulability_batch,

@@ -14,24 +14,16 @@ import numpy as np
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field, Strict
 
-from app.api.common import (
-    ConfigurationIn,
-    JointValue,
-    ORJSONResponse,
-    RobotId,
-    Schema,
-    Vec3Out,
-    load_robot,
-    offload,
-    offload_cancellable,
-)
-from app.api.deps import RegistryDep, SceneStoreDep
+from app.api.body import configurations
+from app.api.deps import RegistryDep, SceneStoreDep, load_robot
 from app.api.errors import ERROR_RESPONSES
+from app.api.offload import offload, offload_cancellable
+from app.api.responses import ORJSONResponse
 from app.api.scenes import ObstacleIn, resolve_obstacles
+from app.api.schemas import ConfigurationIn, JointValue, RobotId, Schema, Vec3Out
 from app.kinematics.collision import collision_model, report_json
 from app.kinematics.collision_pairs import collision_link_pairs, collision_links
-from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel, check_joint_values
+from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["collisions"])
@@ -235,21 +227,8 @@ async def check_collisions_batch(
 ) -> ORJSONResponse:
     """Check many configurations (e.g. a trajectory's waypoints) in the work pool."""
     robot = await load_robot(reg, robot_id)
-    limit = request.app.state.settings.max_batch
-    n = len(body.configurations)
-    if n > limit:
-        raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
-    if n == 0:
-        raise InvalidInputError("give at least one configuration", "configurations")
-    for i, row in enumerate(body.configurations):
-        if len(row) != robot.n:
-            raise InvalidInputError(
-                f"expected {robot.n} values (one per joint), got {len(row)}",
-                f"configurations.{i}",
-            )
+    qs = configurations(body.configurations, robot.n, request.app.state.settings.max_batch)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
-    qs = np.array(body.configurations, dtype=float)
-    check_joint_values(qs, "configurations")
     out = await offload_cancellable(request, _check_batch, robot, qs, obstacles, body)
     return ORJSONResponse(out)
 

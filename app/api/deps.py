@@ -2,7 +2,7 @@
 
 Each resolves to an object made once per app by ``create_app`` (or, for the scene store, on
 first use) and kept on ``app.state``; the ``async`` ones run on the event loop without a
-thread hop.
+thread hop. :func:`load_robot` gives a route its robot from the registry.
 """
 
 from __future__ import annotations
@@ -10,7 +10,9 @@ from __future__ import annotations
 from typing import Annotated
 
 from fastapi import Depends, Request
+from starlette.concurrency import run_in_threadpool
 
+from app.kinematics.models import RobotModel
 from app.registry import Registry
 from app.scenes import SceneStore
 from app.settings import Settings
@@ -38,3 +40,11 @@ def scene_store(request: Request) -> SceneStore:
 RegistryDep = Annotated[Registry, Depends(registry)]
 SettingsDep = Annotated[Settings, Depends(app_settings)]
 SceneStoreDep = Annotated[SceneStore, Depends(scene_store)]
+
+
+async def load_robot(reg: Registry, robot_id: str) -> RobotModel:
+    """The robot's model; a first load (URDF parsing) runs off the event loop."""
+    robot = reg.cached(robot_id)
+    if robot is None:
+        robot = await run_in_threadpool(reg.get, robot_id)
+    return robot

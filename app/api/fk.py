@@ -6,28 +6,15 @@ import numpy as np
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
-from app.api.common import (
-    ConfigurationIn,
-    JointValue,
-    ORJSONResponse,
-    Pose,
-    QuatOut,
-    RobotId,
-    Schema,
-    Vec3Out,
-    body_schema,
-    finite_matrix,
-    load_robot,
-    offload,
-    parse_json,
-    pose_json,
-    validate_body,
-)
-from app.api.deps import RegistryDep, SettingsDep
+from app.api.body import body_schema, configurations, decode_body
+from app.api.deps import RegistryDep, SettingsDep, load_robot
 from app.api.errors import ERROR_RESPONSES
-from app.kinematics.errors import InvalidInputError
+from app.api.offload import offload
+from app.api.poses import Pose, pose_json
+from app.api.responses import ORJSONResponse
+from app.api.schemas import ConfigurationIn, JointValue, QuatOut, RobotId, Schema, Vec3Out
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
-from app.kinematics.models import RobotModel, check_joint_values
+from app.kinematics.models import RobotModel
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
@@ -125,37 +112,8 @@ async def compute_fk_batch(
 
 
 def _fk_batch(robot: RobotModel, raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray]:
-    obj = parse_json(raw)
-    qs = None
-    frame = None
-    # Fast path: exactly the expected shape, numbers only (no true/false, which NumPy would
-    # turn into 1/0). Anything else gets full validation, which names the bad element.
-    if (
-        isinstance(obj, dict)
-        and obj.keys() <= {"configurations", "frame"}
-        and isinstance(obj.get("frame"), str | None)
-        and b"true" not in raw
-        and b"false" not in raw
-    ):
-        qs = finite_matrix(obj.get("configurations"), robot.n)
-        frame = obj.get("frame")
-    if qs is None:
-        body = validate_body(FKBatchRequest, obj)
-        frame = body.frame
-        for i, row in enumerate(body.configurations):
-            if len(row) != robot.n:
-                raise InvalidInputError(
-                    f"expected {robot.n} values (one per joint), got {len(row)}",
-                    f"configurations.{i}",
-                )
-        if not body.configurations:
-            raise InvalidInputError("give at least one configuration", "configurations")
-        qs = np.array(body.configurations, dtype=float)
-    if qs.shape[0] > limit:
-        raise InvalidInputError(
-            f"{qs.shape[0]} configurations exceed the limit of {limit}", "configurations"
-        )
-    check_joint_values(qs, "configurations")
-    frame = frame or robot.ee_frame
+    body, rows = decode_body(raw, FKBatchRequest, {"configurations": robot.n})
+    qs = configurations(rows["configurations"], robot.n, limit)
+    frame = body.frame or robot.ee_frame
     positions, quats = forward_kinematics_batch(robot, qs, frame)
     return frame, positions, quats

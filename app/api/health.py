@@ -19,8 +19,8 @@ from pydantic import BaseModel, Field
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
-from app.api.common import ORJSONResponse
 from app.api.errors import Problem, problem
+from app.api.responses import ORJSONResponse
 from app.registry import Registry
 from app.store import TMP_PREFIX
 

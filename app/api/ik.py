@@ -11,20 +11,12 @@ import pinocchio as pin
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
-from app.api.common import (
-    Finite,
-    Matrix4,
-    ORJSONResponse,
-    Position3,
-    Quat,
-    RobotId,
-    Schema,
-    load_robot,
-    offload_cancellable,
-)
-from app.api.deps import RegistryDep, scene_store
+from app.api.deps import RegistryDep, load_robot, scene_store
 from app.api.errors import ERROR_RESPONSES
+from app.api.offload import offload_cancellable
+from app.api.responses import ORJSONResponse
 from app.api.scenes import ObstacleIn, resolve_obstacles
+from app.api.schemas import Finite, Matrix4, Position3, Quat, RobotId, Schema
 from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError

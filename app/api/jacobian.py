@@ -5,9 +5,10 @@ from __future__ import annotations
 from fastapi import APIRouter
 from pydantic import BaseModel, Field
 
-from app.api.common import ConfigurationIn, ORJSONResponse, RobotId, load_robot
-from app.api.deps import RegistryDep
+from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
+from app.api.responses import ORJSONResponse
+from app.api.schemas import ConfigurationIn, RobotId
 from app.kinematics.jacobian import Reference, frame_jacobian
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])

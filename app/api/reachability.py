@@ -32,22 +32,12 @@ from pydantic import BaseModel, Field
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
-from app.api.common import (
-    Finite,
-    ORJSONResponse,
-    Quat,
-    RobotId,
-    Schema,
-    Vec3,
-    body_schema,
-    finite_matrix,
-    load_robot,
-    offload,
-    parse_json,
-    validate_body,
-)
-from app.api.deps import RegistryDep
+from app.api.body import body_schema, decode_body, finite_matrix
+from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
+from app.api.offload import offload
+from app.api.responses import ORJSONResponse
+from app.api.schemas import Finite, Quat, RobotId, Schema, Vec3
 from app.api.security import require_token
 from app.kinematics.analysis import Part
 from app.kinematics.errors import ConflictError, InvalidInputError
@@ -374,39 +364,16 @@ async def _map_for(request: Request, reg: Registry, robot_id: str, map_id: str) 
 def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray | None]:
     """Decode and validate a query body: map id, positions (N, 3), quaternions (N, 4) with
     NaN rows for "any orientation" (or ``None``: any orientation for all)."""
-    obj = parse_json(raw)
-    if (
-        isinstance(obj, dict)
-        and isinstance(obj.get("map_id"), str)
-        and len(obj["map_id"]) <= 64
-        and b"true" not in raw
-        and b"false" not in raw
-    ):
-        # fast paths: numbers only, right widths (else full validation names the element)
-        if obj.keys() <= {"map_id", "positions", "orientations"}:
-            pos = finite_matrix(obj.get("positions"), 3)
-            quat = finite_matrix(obj["orientations"], 4) if "orientations" in obj else None
-            if pos is not None and (quat is not None or "orientations" not in obj):
-                return _check_query(obj["map_id"], pos, quat, "positions", limit)
-        poses = obj.get("poses")
-        if (
-            obj.keys() == {"map_id", "poses"}
-            and isinstance(poses, list)
-            and poses
-            and all(isinstance(p, dict) for p in poses)
-        ):
-            keys = {frozenset(p) for p in poses}
-            if keys in ({frozenset({"position"})}, {frozenset({"position", "orientation"})}):
-                pos = finite_matrix([p["position"] for p in poses], 3)
-                with_q = "orientation" in poses[0]
-                quat = finite_matrix([p["orientation"] for p in poses], 4) if with_q else None
-                if pos is not None and (quat is not None or not with_q):
-                    if quat is not None:
-                        quat = unit_quaternions(quat, "poses.{}.orientation")
-                    return _check_query(obj["map_id"], pos, quat, "poses", limit)
-    body = validate_body(QueryRequest, obj)
+    body, rows = decode_body(
+        raw, QueryRequest, {"positions": 3, "orientations": 4}, fast=_pose_columns
+    )
     if (body.poses is None) == (body.positions is None):
         raise InvalidInputError("give exactly one of poses or positions", "poses")
+    if "poses.position" in rows:  # fast path: all poses with an orientation, or none
+        quat = rows.get("poses.orientation")
+        if quat is not None:
+            quat = unit_quaternions(quat, "poses.{}.orientation")
+        return _check_query(body.map_id, rows["poses.position"], quat, "poses", limit)
     if body.poses is not None:
         n = len(body.poses)
         pos = np.array([p.position for p in body.poses], dtype=float).reshape(n, 3)
@@ -416,12 +383,31 @@ def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray |
                 quat[i] = p.orientation
         given = ~np.isnan(quat[:, 0])
         if given.any():
-            rows = np.flatnonzero(given)
-            quat[given] = unit_quaternions(quat[given], "poses.{}.orientation", rows)
+            rows_given = np.flatnonzero(given)
+            quat[given] = unit_quaternions(quat[given], "poses.{}.orientation", rows_given)
         return _check_query(body.map_id, pos, quat, "poses", limit)
-    pos = np.array(body.positions, dtype=float).reshape(len(body.positions), 3)
-    quat = None if body.orientations is None else np.array(body.orientations, dtype=float)
+    pos = np.asarray(rows["positions"], dtype=float).reshape(-1, 3)
+    quat = rows.get("orientations")
+    quat = None if quat is None else np.asarray(quat, dtype=float)
     return _check_query(body.map_id, pos, quat, "positions", limit)
+
+
+def _pose_columns(obj: dict) -> dict[str, np.ndarray] | None:
+    """The fast form of ``poses``: position (and orientation) columns when every pose has
+    the same keys and plain numbers (:data:`app.api.body.FastForm`)."""
+    poses = obj.get("poses")
+    if not (isinstance(poses, list) and poses and all(isinstance(p, dict) for p in poses)):
+        return None
+    keys = {frozenset(p) for p in poses}
+    if keys not in ({frozenset({"position"})}, {frozenset({"position", "orientation"})}):
+        return None
+    pos = finite_matrix([p["position"] for p in poses], 3)
+    if pos is None:
+        return None
+    if "orientation" not in poses[0]:
+        return {"poses.position": pos}
+    quat = finite_matrix([p["orientation"] for p in poses], 4)
+    return None if quat is None else {"poses.position": pos, "poses.orientation": quat}
 
 
 def _check_query(

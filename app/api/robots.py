@@ -17,19 +17,12 @@ from fastapi import APIRouter, Depends, Request
 from pydantic import BaseModel, Field
 from starlette.responses import Response
 
-from app.api.common import (
-    ORJSONResponse,
-    RobotId,
-    Schema,
-    Text,
-    Vec3Out,
-    body_schema,
-    offload,
-    parse_json,
-    validate_body,
-)
+from app.api.body import body_schema, decode_body
 from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
+from app.api.offload import offload
+from app.api.responses import ORJSONResponse
+from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
 from app.kinematics.collision_pairs import collision_link_pairs
 from app.kinematics.models import RobotModel
@@ -282,15 +275,9 @@ def _add_urdf(reg: Registry, upload: UrdfUpload) -> dict[str, Any]:
     response_model=RobotDetail,
     dependencies=[Depends(require_token)],
     responses=_WRITE_ERRORS,
-    openapi_extra={
-        "requestBody": {
-            "required": True,
-            "content": {
-                "application/json": {"schema": {"$ref": "#/components/schemas/DHTableDoc"}},
-                "application/yaml": {"schema": {"$ref": "#/components/schemas/DHTableDoc"}},
-            },
-        }
-    },
+    openapi_extra=body_schema(
+        DHTableDoc, ("application/json", "application/yaml"), add_component=False
+    ),
 )
 async def import_dh_robot(request: Request, reg: RegistryDep) -> Response:
     """Add a robot from a DH table; its id is the table's ``name``.
@@ -351,7 +338,7 @@ async def upload_urdf_robot(request: Request, reg: RegistryDep) -> Response:
     body = await _read_upload(request)
     if isinstance(body, Response):
         return body
-    upload = validate_body(UrdfUpload, parse_json(body))
+    upload, _ = decode_body(body, UrdfUpload)
     return _created(await offload(_add_urdf, reg, upload))
 
 

@@ -14,9 +14,10 @@ from fastapi import APIRouter, Depends, Path
 from pydantic import BaseModel, Field, Strict
 from starlette.responses import Response
 
-from app.api.common import ORJSONResponse, Quat, Schema, Text, Vec3, Vec3Out
 from app.api.deps import SceneStoreDep
 from app.api.errors import ERROR_RESPONSES
+from app.api.responses import ORJSONResponse
+from app.api.schemas import Quat, Schema, Text, Vec3, Vec3Out
 from app.api.security import require_token
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.obstacles import MAX_NAME_LENGTH, MAX_OBSTACLES, Obstacle, parse_obstacles

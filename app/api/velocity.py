@@ -7,9 +7,10 @@ from typing import Annotated, Literal
 from fastapi import APIRouter
 from pydantic import BaseModel, Field
 
-from app.api.common import ConfigurationIn, Finite, ORJSONResponse, RobotId, load_robot
-from app.api.deps import RegistryDep
+from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
+from app.api.responses import ORJSONResponse
+from app.api.schemas import ConfigurationIn, Finite, RobotId
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.velocity import (
     MAX_DAMPING,

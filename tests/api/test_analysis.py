@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from app.kinematics.models import RobotModel
-from tests.kinematics.test_analysis import L1, L2, planar2_urdf
+from tests.kinematics.chains import L1, L2, planar2_urdf
 
 Q_UR5 = [0.1, -1.0, 1.3, -0.4, 0.8, 0.2]
 

@@ -6,17 +6,11 @@ import math
 
 import pytest
 
+from tests.helpers import problem
+
 READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
 FOLDED = [0.638, -1.713, -2.25, -2.588, -0.848, 0.027, 2.491, 0.01]
 BALL = {"name": "ball", "shape": "sphere", "radius": 0.1, "pose": {"position": [0.5, 0, 0.5]}}
-
-
-def problem(response, status: int, field: str) -> dict:
-    assert response.status_code == status, response.text
-    body = response.json()
-    assert response.headers["content-type"].startswith("application/problem+json")
-    assert body["field"] == field, body
-    return body
 
 
 def test_panda_ready_is_free(client) -> None:

@@ -10,8 +10,8 @@ import numpy as np
 
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
-from tests.kinematics.test_fk import random_configurations
-from tests.live import serve
+from tests.helpers import serve
+from tests.kinematics.reference import random_configurations
 
 
 def test_concurrent_requests_each_get_their_own_answer(tmp_path, registry) -> None:
@@ -41,7 +41,8 @@ def test_concurrent_requests_each_get_their_own_answer(tmp_path, registry) -> No
             r = client.post(f"/robots/{rid}/fk/batch", json={"configurations": [q.tolist()] * 3})
         return job, r.status_code, r.json()
 
-    with serve(tmp_path / "data") as url:
+    with serve(tmp_path / "data") as server:
+        url = server.url
         try:
             with ThreadPoolExecutor(max_workers=48) as pool:
                 results = list(pool.map(call, jobs))

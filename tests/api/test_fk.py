@@ -8,21 +8,10 @@ import pytest
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.rotations import quaternion_to_matrix, rpy_to_matrix
+from tests.helpers import problem
+from tests.kinematics.reference import reference_pose
 
 PANDA_READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
-
-
-def problem(resp, status: int, field: str | None = None) -> dict:
-    """Assert an RFC 9457 problem body with the given status (and field)."""
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    assert {"type", "title", "status", "detail"} <= body.keys()
-    assert body["status"] == status
-    if field is not None:
-        assert body["field"] == field, body
-        assert field in body["detail"]
-    return body
 
 
 def post_raw(client, url: str, raw: str):
@@ -75,11 +64,16 @@ def test_fk_out_of_limits_flagged(client) -> None:
     assert body["within_limits"] is False and body["joints_outside_limits"] == ["elbow_joint"]
 
 
-def test_fk_continuous_joint_one_angle(client) -> None:
-    a = client.post("/robots/kinova/fk", json={"q": [0.5, 2, 2, 1, 1, 0]}).json()
-    b = client.post("/robots/kinova/fk", json={"q": [0.5 + 2 * np.pi, 2, 2, 1, 1, 0]}).json()
+def test_fk_continuous_joint_one_angle(client, registry) -> None:
+    """A continuous joint takes one angle (not Pinocchio's cos/sin pair); θ and θ + 2π give
+    the pose yourdfpy gives for θ."""
+    q = [0.5, 2, 2, 1, 1, 0]
+    a = client.post("/robots/kinova/fk", json={"q": q}).json()
+    b = client.post("/robots/kinova/fk", json={"q": [0.5 + 2 * np.pi, *q[1:]]}).json()
     ee = "j2s6s200_end_effector"
-    np.testing.assert_allclose(a["poses"][ee]["matrix"], b["poses"][ee]["matrix"], atol=1e-12)
+    ref = reference_pose(registry.get("kinova"), np.array(q, dtype=float), ee)
+    np.testing.assert_allclose(a["poses"][ee]["matrix"], ref, atol=1e-12)
+    np.testing.assert_allclose(b["poses"][ee]["matrix"], ref, atol=1e-12)
 
 
 def test_batch_matches_single(client) -> None:
@@ -177,8 +171,8 @@ def test_non_numbers(client, value: str) -> None:
 def test_malformed_json(client, raw: str) -> None:
     resp = post_raw(client, "/robots/ur5/fk", raw)
     if raw == "":
-        # an empty body is "no body": the model's required fields are missing
-        assert resp.status_code in (400, 422)
+        # an empty body is "no body": a 422 naming the missing body
+        problem(resp, 422, "body")
     else:
         problem(resp, 400, "body")
 

@@ -18,7 +18,7 @@ from app.main import create_app
 from app.registry import erd_share_dir
 from app.scenes import SceneStore
 from app.settings import Settings
-from tests.live import serve
+from tests.helpers import problem, serve
 
 SURROGATE = "\\ud800"  # the JSON escape of a lone UTF-16 surrogate
 
@@ -52,15 +52,6 @@ def chain(n: int) -> str:
 
 def post_raw(client: TestClient, path: str, text: str, content_type: str = "application/json"):
     return client.post(path, content=text.encode(), headers={"content-type": content_type})
-
-
-def problem(resp, status: int, field: str | None = None) -> dict:
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    if field is not None:
-        assert body["field"] == field, body
-    return body
 
 
 def user_ids(client: TestClient) -> list[str]:
@@ -386,7 +377,8 @@ def test_killer_document_gets_a_quick_4xx_on_a_live_two_worker_server(tmp_path) 
     """Before: ~100 s of GIL in the model build (the worker starved). Now: refused at parse."""
     doc = killer_urdf()
     assert len(doc) > 1_000_000
-    with serve(tmp_path / "data", "--workers", "2") as url, httpx.Client(timeout=60) as http:
+    with serve(tmp_path / "data", "--workers", "2") as server, httpx.Client(timeout=60) as http:
+        url = server.url
         start = time.monotonic()
         resp = http.post(url + "/robots/urdf", json={"name": "killer", "urdf": doc})
         elapsed = time.monotonic() - start

@@ -9,17 +9,10 @@ import pytest
 
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.rotations import matrix_to_quaternion
+from tests.helpers import problem
 
 Q_UR5 = [0.3, -1.0, 1.2, 0.2, 0.5, 0.1]
 GOOD_TARGET = {"position": [0.3, 0.2, 0.4], "orientation": [0.0, 0.0, 0.0, 1.0]}
-
-
-def problem(resp, status: int, field: str) -> dict:
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    assert body["status"] == status and body["field"] == field, body
-    return body
 
 
 def ur5_target(registry, q=Q_UR5) -> dict:

@@ -26,7 +26,7 @@ from app.kinematics.errors import Cancelled
 from app.main import create_app
 from app.registry import Registry
 from app.settings import Settings
-from tests.live import serve
+from tests.helpers import serve
 
 #: 20 unreachable targets (panda reaches ~0.86 m), 1 s each: 20 s of solver time.
 TARGETS, TIMEOUT_MS = 20, 1000.0
@@ -70,7 +70,8 @@ def test_abandoned_batches_do_not_starve_the_pool(tmp_path: Path, registry: Regi
     would have finished (three quarters of their budget: a wide margin, not a tight clock)."""
     slots = 2 * (os.cpu_count() or 2)
     good = reachable_batch(registry)
-    with serve(tmp_path / "data", "--workers", "2") as url:
+    with serve(tmp_path / "data", "--workers", "2") as server:
+        url = server.url
         for _ in range(8):  # new connections, so that both workers set up their IK chains
             with httpx.Client(base_url=url, timeout=60) as c:
                 assert c.post("/robots/panda/ik/batch", json=good).status_code == 200

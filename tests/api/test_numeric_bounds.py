@@ -18,20 +18,13 @@ from fastapi.testclient import TestClient
 from app.kinematics import ik
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
+from tests.helpers import problem
 from tests.kinematics.chains import planar_2link
 
 BIG = 1e300
 JUST_OVER = MAX_JOINT_VALUE * (1 + 1e-12)
 Q6 = [0.1, -0.4, 0.3, 0.2, 0.5, -0.1]
 POSE = {"position": [0.3, 0.2, 0.4], "orientation": [0.0, 0.0, 0.0, 1.0]}
-
-
-def problem(resp, field: str, status: int = 422) -> dict:
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    assert body["field"] == field, body
-    return body
 
 
 def with_value(i: int, value: float, base=Q6) -> list[float]:
@@ -56,12 +49,12 @@ def with_value(i: int, value: float, base=Q6) -> list[float]:
 )
 def test_every_single_configuration_is_bounded(client: TestClient, path, extra, value) -> None:
     r = client.post(f"/robots/ur5/{path}", json={"q": with_value(3, value), **extra})
-    body = problem(r, "q.3")
+    body = problem(r, 422, "q.3")
     assert "10000" in body["detail"]
     r = client.post(
         f"/robots/ur5/{path}", json={"joint_positions": {"elbow_joint": value}, **extra}
     )
-    problem(r, "joint_positions.elbow_joint")
+    problem(r, 422, "joint_positions.elbow_joint")
 
 
 @pytest.mark.parametrize(
@@ -70,20 +63,24 @@ def test_every_single_configuration_is_bounded(client: TestClient, path, extra, 
 )
 def test_every_batch_is_bounded(client: TestClient, path, extra) -> None:
     rows = [Q6] * 5 + [with_value(2, BIG)] + [Q6]
-    problem(client.post(f"/robots/ur5/{path}", json={"configurations": rows}), "configurations.5.2")
+    problem(
+        client.post(f"/robots/ur5/{path}", json={"configurations": rows}), 422, "configurations.5.2"
+    )
     rows[5] = with_value(0, -JUST_OVER)
-    problem(client.post(f"/robots/ur5/{path}", json={"configurations": rows}), "configurations.5.0")
+    problem(
+        client.post(f"/robots/ur5/{path}", json={"configurations": rows}), 422, "configurations.5.0"
+    )
 
 
 def test_ik_seed_is_bounded(client: TestClient) -> None:
     r = client.post("/robots/ur5/ik", json={"target": POSE, "seed": with_value(4, BIG)})
-    problem(r, "seed.4")
+    problem(r, 422, "seed.4")
     r = client.post("/robots/ur5/ik", json={"target": POSE, "seed": {"wrist_2_joint": -BIG}})
-    problem(r, "seed.wrist_2_joint")
+    problem(r, 422, "seed.wrist_2_joint")
     r = client.post(
         "/robots/ur5/ik/batch", json={"targets": [POSE], "seed": {"wrist_2_joint": JUST_OVER}}
     )
-    problem(r, "seed.wrist_2_joint")
+    problem(r, 422, "seed.wrist_2_joint")
 
 
 def test_up_to_the_bound_the_answer_is_right(client: TestClient) -> None:
@@ -107,20 +104,23 @@ def test_up_to_the_bound_the_answer_is_right(client: TestClient) -> None:
 @pytest.mark.parametrize("value", [BIG, -2 * MAX_POSITION])
 def test_ik_target_positions_are_bounded(client: TestClient, value: float) -> None:
     target = {"position": [0.3, value, 0.4], "orientation": [0, 0, 0, 1]}
-    problem(client.post("/robots/ur5/ik", json={"target": target}), "target.position.1")
+    problem(client.post("/robots/ur5/ik", json={"target": target}), 422, "target.position.1")
     problem(
         client.post(
             "/robots/ur5/ik", json={"target": {"position": [0, value, 0]}, "mode": "position"}
         ),
+        422,
         "target.position.1",
     )
     M = np.eye(4)
     M[2, 3] = value
     problem(
-        client.post("/robots/ur5/ik", json={"target": {"matrix": M.tolist()}}), "target.matrix.2.3"
+        client.post("/robots/ur5/ik", json={"target": {"matrix": M.tolist()}}),
+        422,
+        "target.matrix.2.3",
     )
     r = client.post("/robots/ur5/ik/batch", json={"targets": [POSE, target]})
-    problem(r, "targets.1.position.1")
+    problem(r, 422, "targets.1.position.1")
 
 
 @pytest.mark.parametrize(
@@ -134,7 +134,7 @@ def test_ik_target_positions_are_bounded(client: TestClient, value: float) -> No
 )
 def test_velocities_and_twists_are_bounded(client: TestClient, extra: dict, field: str) -> None:
     """Before: 200 with null in `twist` / `residual` (J·q̇ overflowed to inf)."""
-    problem(client.post("/robots/ur5/velocity", json={"q": Q6, **extra}), field)
+    problem(client.post("/robots/ur5/velocity", json={"q": Q6, **extra}), 422, field)
 
 
 # ------------------------------------------------------------------ IK: numbers or refusals

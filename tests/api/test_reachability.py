@@ -16,8 +16,8 @@ from fastapi.testclient import TestClient
 from app.kinematics.models import RobotModel
 from app.main import create_app
 from app.settings import Settings
-from tests.kinematics.test_analysis import L1, L2, planar2_urdf
-from tests.live import serve
+from tests.helpers import serve
+from tests.kinematics.chains import L1, L2, planar2_urdf
 
 ROBOT = "planar2_test"
 BASE = f"/robots/{ROBOT}/reachability"
@@ -401,7 +401,7 @@ def test_query_forms_agree(pc):
 def test_self_collision_build_over_http(client, app):
     """The self-collision hook through the API: folded configurations of a boxed planar arm
     are dropped (see the core test); a robot without collision geometry builds normally."""
-    from tests.kinematics.test_reachability import COLLIDING_URDF
+    from tests.kinematics.chains import COLLIDING_URDF
 
     app.state.registry._cache["boxes"] = RobotModel("boxes", COLLIDING_URDF, ee_frame="tip")
     body = {
@@ -462,7 +462,8 @@ def test_two_server_processes_share_build_jobs(tmp_path):
         "samples": 60_000,
     }
     base = "/robots/planar2/reachability"
-    with serve(tmp_path / "data") as a, serve(tmp_path / "data") as b:
+    with serve(tmp_path / "data") as server_a, serve(tmp_path / "data") as server_b:
+        a, b = server_a.url, server_b.url
         r = httpx.post(a + base, json=body, timeout=30)
         assert r.status_code == 202, r.text
         job_id = r.json()["job_id"]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 
 def test_single_joint_robot_jacobian_analysis_statics(client) -> None:
@@ -15,7 +16,13 @@ def test_single_joint_robot_jacobian_analysis_statics(client) -> None:
     # tool at (0.5 cos θ, 0.5 sin θ, 0), rotating about z
     np.testing.assert_allclose(J[:, 0], [-0.5 * np.sin(th), 0.5 * np.cos(th), 0, 0, 0, 1],
                                atol=1e-12)  # fmt: skip
-    assert client.post("/robots/one/manipulability", json={"q": [th]}).status_code == 200
+    m = client.post("/robots/one/manipulability", json={"q": [th]})
+    assert m.status_code == 200, m.text
+    # one column of norm √(0.5² + 1): one singular value, full column rank, not singular
+    body = m.json()
+    assert body["joints"] == ["j1"] and body["rank"] == 1 and body["singular"] is False
+    np.testing.assert_allclose(body["singular_values"], [np.sqrt(1.25)], rtol=1e-12)
+    assert body["yoshikawa"] == pytest.approx(np.sqrt(1.25), rel=1e-12)
     tau = client.post("/robots/one/statics", json={"q": [th], "wrench": [1, 0, 0, 0, 0, 0]})
     assert tau.status_code == 200
     np.testing.assert_allclose(tau.json()["torques"], [-0.5 * np.sin(th)], atol=1e-12)

@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 
 from app.main import create_app
 from app.settings import Settings
-from tests.live import serve
+from tests.helpers import problem, serve
 
 TABLE = {
     "name": "tiny",
@@ -75,17 +75,6 @@ def reference(rows: list[dict], q: list[float], length: float = 1.0, angle: floa
             theta += value
         T = T @ dh(a, alpha, d, theta)
     return T
-
-
-def problem(resp, status: int, field: str | None = None) -> dict:
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    assert body["status"] == status
-    if field is not None:
-        assert body["field"] == field, body
-        assert field in body["detail"]
-    return body
 
 
 def snapshot(root: Path) -> list[str]:
@@ -397,7 +386,8 @@ def test_upload_limit_413(tmp_path: Path) -> None:
 def test_two_server_processes_share_the_data_dir(tmp_path: Path) -> None:
     """Two uvicorn processes (as two workers are): import via A, GET via B; delete, 404."""
     data = tmp_path / "data"
-    with serve(data) as a, serve(data) as b:
+    with serve(data) as server_a, serve(data) as server_b:
+        a, b = server_a.url, server_b.url
         assert httpx.get(f"{b}/robots/tiny").status_code == 404  # B looked before
         assert httpx.post(f"{a}/robots/dh", json=TABLE).status_code == 201
         q = {"q": [0.3, -0.2, 0.1]}

@@ -11,6 +11,7 @@ from fastapi.testclient import TestClient
 
 from app.main import create_app
 from app.settings import Settings
+from tests.helpers import problem
 
 
 def joint(
@@ -44,17 +45,6 @@ GOOD = robot(
     links="base l1 l2 tip",
 )
 SRDF = '<robot name="r"><disable_collisions link1="base" link2="l2" reason="Never"/></robot>'
-
-
-def problem(resp, status: int, field: str | None = None) -> dict:
-    assert resp.status_code == status, resp.text
-    assert resp.headers["content-type"].startswith("application/problem+json")
-    body = resp.json()
-    assert body["status"] == status
-    if field is not None:
-        assert body["field"] == field, body
-        assert field in body["detail"]
-    return body
 
 
 def snapshot(root: Path) -> list[str]:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 
 def planar_2link(
     l1: float = 1.0,
@@ -96,4 +98,43 @@ def continuous_arm() -> str:
     <origin xyz="0.5 0 0"/><axis xyz="0 1 0"/>
     <limit lower="-1" upper="1" velocity="1" effort="1"/>
   </joint>
+</robot>"""
+
+
+L1, L2 = 0.9, 0.6
+
+
+def planar2_urdf(
+    l1: float = L1,
+    l2: float = L2,
+    base_xyz: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    base_rpy: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    limit: float = math.pi,
+) -> str:
+    """Planar 2-link arm on a fixed base joint (world → base): x = l1c1 + l2c12,
+    y = l1s1 + l2s12 in the base frame (tests/kinematics/chains.py)."""
+    return planar_2link(
+        l1, l2, base_xyz=base_xyz, base_rpy=base_rpy, limit=limit, name="planar2_test"
+    )
+
+
+#: A planar 2R arm with box collision geometry: folded back, link 2 enters the base box.
+COLLIDING_URDF = """<?xml version="1.0"?>
+<robot name="planar_boxes">
+  <link name="base"><collision><geometry><box size="0.8 0.8 0.1"/></geometry></collision>
+  </link>
+  <link name="link1"><collision><origin xyz="0.45 0 0.2"/>
+    <geometry><box size="0.5 0.05 0.05"/></geometry></collision></link>
+  <link name="link2"><collision><origin xyz="0.3 0 0"/>
+    <geometry><box size="0.6 0.05 0.1"/></geometry></collision></link>
+  <link name="tip"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="link1"/>
+    <axis xyz="0 0 1"/><limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
+  </joint>
+  <joint name="j2" type="revolute"><parent link="link1"/><child link="link2"/>
+    <origin xyz="0.9 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
+  </joint>
+  <joint name="tip_joint" type="fixed"><parent link="link2"/><child link="tip"/>
+    <origin xyz="0.6 0 0"/></joint>
 </robot>"""

@@ -18,23 +18,7 @@ from app.kinematics.analysis import (
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
-from tests.kinematics.chains import planar_2link
-
-L1, L2 = 0.9, 0.6
-
-
-def planar2_urdf(
-    l1: float = L1,
-    l2: float = L2,
-    base_xyz: tuple[float, float, float] = (0.0, 0.0, 0.0),
-    base_rpy: tuple[float, float, float] = (0.0, 0.0, 0.0),
-    limit: float = math.pi,
-) -> str:
-    """Planar 2-link arm on a fixed base joint (world → base): x = l1c1 + l2c12,
-    y = l1s1 + l2s12 in the base frame (tests/kinematics/chains.py)."""
-    return planar_2link(
-        l1, l2, base_xyz=base_xyz, base_rpy=base_rpy, limit=limit, name="planar2_test"
-    )
+from tests.kinematics.chains import L1, L2, planar2_urdf
 
 
 @pytest.fixture(scope="module")

@@ -11,15 +11,9 @@ from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion
 from tests.kinematics.chains import continuous_arm, planar_2link
+from tests.kinematics.reference import random_configurations
 
 CATALOG = ["panda", "ur3", "ur5", "ur10", "kinova", "xarm", "z1", "so100"]
-
-
-def random_configurations(robot: RobotModel, n: int, seed: int = 0) -> np.ndarray:
-    rng = np.random.default_rng(seed)
-    lo = np.where(np.isfinite(robot.lower), robot.lower, -np.pi)
-    hi = np.where(np.isfinite(robot.upper), robot.upper, np.pi)
-    return rng.uniform(lo, hi, size=(n, robot.n))
 
 
 @pytest.mark.parametrize("robot_id", CATALOG)

@@ -7,13 +7,11 @@ Budgets are generous (tests run on loaded machines); speed is measured in bench/
 
 from __future__ import annotations
 
-import io
 import math
 
 import numpy as np
 import pinocchio as pin
 import pytest
-import yourdfpy
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -22,9 +20,9 @@ from app.kinematics.analytic_ik.planar2 import into_limits, planar2_geometry, pl
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
+from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
 
 BUDGET_MS = 500.0
-TOL = 1e-5
 
 # (robot id, frame, closed forms allowed): the benchmark chains and a DH robot.
 CHAINS = [
@@ -35,54 +33,11 @@ CHAINS = [
 ]
 
 
-def _urdf(robot: RobotModel) -> yourdfpy.URDF:
-    return robot.lazy(
-        "test.yourdfpy",
-        lambda r: yourdfpy.URDF.load(
-            io.BytesIO(r.urdf_text.encode()),
-            load_meshes=False,
-            build_collision_scene_graph=False,
-            load_collision_meshes=False,
-        ),
-    )
-
-
-def reference_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.ndarray:
-    """World pose of a link by yourdfpy (independent of Pinocchio)."""
-    urdf = _urdf(robot)
-    urdf.update_cfg(q)
-    return urdf.get_transform(frame, urdf.base_link)
-
-
-def pose_error(T: np.ndarray, target: np.ndarray) -> tuple[float, float]:
-    """Position distance and rotation angle between two 4×4 poses.
-
-    The angle of R = R_tᵀ·R_T is atan2(sin θ, cos θ) with sin θ = ‖vee(R − Rᵀ)‖/2 and
-    cos θ = (tr R − 1)/2: accurate to ~1e-16 near θ = 0, where acos((tr R − 1)/2) cannot
-    resolve angles below ~2e-8 (acos(1 − ε) = √(2ε)).
-    """
-    dp = float(np.linalg.norm(T[:3, 3] - target[:3, 3]))
-    R = target[:3, :3].T @ T[:3, :3]
-    s = 0.5 * math.hypot(R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1])
-    c = (np.trace(R) - 1.0) / 2.0
-    return dp, float(math.atan2(s, c))
-
-
 def within_limits(robot: RobotModel, q: np.ndarray) -> bool:
     return all(
         j.continuous or (j.lower - 1e-12 <= v <= j.upper + 1e-12)
         for j, v in zip(robot.joints, q, strict=True)
     )
-
-
-def random_q(robot: RobotModel, rng: np.random.Generator) -> np.ndarray:
-    lo = np.where(np.isfinite(robot.lower), robot.lower, -np.pi)
-    hi = np.where(np.isfinite(robot.upper), robot.upper, np.pi)
-    return rng.uniform(lo, hi)
-
-
-def se3(T: np.ndarray) -> pin.SE3:
-    return pin.SE3(T[:3, :3].copy(), T[:3, 3].copy())
 
 
 @pytest.mark.parametrize("angle", [1e-13, 3e-9, 0.5, 3.0])

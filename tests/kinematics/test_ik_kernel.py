@@ -16,7 +16,7 @@ from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
 from tests.kinematics.chains import continuous_arm, rrp_like
-from tests.kinematics.test_ik import TOL, pose_error, random_q, reference_pose, se3
+from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
 
 
 def test_numba_is_used() -> None:

@@ -10,7 +10,7 @@ from app.kinematics.fk import forward_kinematics
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
 from tests.kinematics.chains import continuous_arm, rrp_like
-from tests.kinematics.test_fk import random_configurations
+from tests.kinematics.reference import random_configurations
 
 H = 1e-6
 

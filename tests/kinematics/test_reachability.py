@@ -43,7 +43,7 @@ from app.kinematics.reachability import (
     yoshikawa_components,
 )
 from app.kinematics.rotations import matrix_to_quaternion, quaternion_to_matrix
-from tests.kinematics.test_analysis import L1, L2, planar2_urdf
+from tests.kinematics.chains import COLLIDING_URDF, L1, L2, planar2_urdf
 
 PRISMATIC_URDF = """<?xml version="1.0"?>
 <robot name="rrp_test">
@@ -284,27 +284,6 @@ def test_quaternion_bins_from_matrices_roundtrip():
     q = random_quaternions(100, seed=5)
     back = matrix_to_quaternion(quaternion_to_matrix(q))
     assert np.array_equal(orientation_bin(q, 3), orientation_bin(back, 3))
-
-
-COLLIDING_URDF = """<?xml version="1.0"?>
-<robot name="planar_boxes">
-  <link name="base"><collision><geometry><box size="0.8 0.8 0.1"/></geometry></collision>
-  </link>
-  <link name="link1"><collision><origin xyz="0.45 0 0.2"/>
-    <geometry><box size="0.5 0.05 0.05"/></geometry></collision></link>
-  <link name="link2"><collision><origin xyz="0.3 0 0"/>
-    <geometry><box size="0.6 0.05 0.1"/></geometry></collision></link>
-  <link name="tip"/>
-  <joint name="j1" type="revolute"><parent link="base"/><child link="link1"/>
-    <axis xyz="0 0 1"/><limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
-  </joint>
-  <joint name="j2" type="revolute"><parent link="link1"/><child link="link2"/>
-    <origin xyz="0.9 0 0"/><axis xyz="0 0 1"/>
-    <limit lower="-3.14159" upper="3.14159" velocity="1" effort="1"/>
-  </joint>
-  <joint name="tip_joint" type="fixed"><parent link="link2"/><child link="tip"/>
-    <origin xyz="0.6 0 0"/></joint>
-</robot>"""
 
 
 def test_self_collision_hook_drops_folded_samples():

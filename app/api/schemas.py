@@ -1,0 +1,76 @@
+"""Wire types every router shares: finite numbers, joint values, text, configurations.
+
+The request side is strict (unknown fields are errors, numbers must be finite JSON
+numbers); the ``*Out`` twins type the service's own answers with the same fixed lengths,
+so a generated client can pass an answer's pose back in a request.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import numpy as np
+from fastapi import Path
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, Strict
+
+from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
+from app.kinematics.text import SURROGATE_REASON, has_surrogate
+
+#: A finite JSON number (ints accepted; strings, booleans, NaN and ±Infinity rejected).
+Finite = Annotated[float, Strict(), Field(allow_inf_nan=False)]
+Vec3 = Annotated[list[Finite], Field(min_length=3, max_length=3)]
+Quat = Annotated[list[Finite], Field(min_length=4, max_length=4)]
+Vec4 = Annotated[list[Finite], Field(min_length=4, max_length=4)]
+Matrix4 = Annotated[list[Vec4], Field(min_length=4, max_length=4)]
+# Response twins of the above (plain floats: the service's own output). Same fixed lengths
+# as the request types, so a generated client can pass an answer's pose back in a request.
+Vec3Out = Annotated[list[float], Field(min_length=3, max_length=3)]
+QuatOut = Annotated[list[float], Field(min_length=4, max_length=4)]
+Vec4Out = Annotated[list[float], Field(min_length=4, max_length=4)]
+Matrix4Out = Annotated[list[Vec4Out], Field(min_length=4, max_length=4)]
+#: A joint value (rad or m) within ±MAX_JOINT_VALUE, the one bound of every configuration
+#: (:data:`app.kinematics.models.MAX_JOINT_VALUE`; fast paths check it with
+#: :func:`~app.kinematics.models.check_joint_values`).
+JointValue = Annotated[Finite, Field(ge=-MAX_JOINT_VALUE, le=MAX_JOINT_VALUE)]
+#: A target coordinate (m) within ±MAX_POSITION.
+Coordinate = Annotated[Finite, Field(ge=-MAX_POSITION, le=MAX_POSITION)]
+Position3 = Annotated[list[Coordinate], Field(min_length=3, max_length=3)]
+
+
+def _valid_text(value: str) -> str:
+    if has_surrogate(value):
+        raise ValueError(SURROGATE_REASON)
+    return value
+
+
+#: A string of valid Unicode: every text field that is stored or echoed uses it (a lone
+#: UTF-16 surrogate, ``"\ud800"`` in JSON, cannot be encoded in a response or a file).
+Text = Annotated[str, AfterValidator(_valid_text)]
+
+RobotId = Annotated[str, Path(description="Robot id, as listed by GET /robots.", max_length=64)]
+
+
+class Schema(BaseModel):
+    """Base of request models: unknown fields are errors, numbers must be finite."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
+class ConfigurationIn(Schema):
+    """A configuration: ``q`` in joint order, or a ``joint_positions`` map (not both)."""
+
+    q: list[JointValue] | None = Field(
+        None,
+        description="One value per actuated joint, in the order of GET /robots/{id} "
+        "(rad for revolute and continuous joints, m for prismatic ones).",
+        max_length=1024,
+    )
+    joint_positions: dict[str, JointValue] | None = Field(
+        None,
+        description="Joint name → value (rad or m); joints not given take their neutral value.",
+        max_length=1024,
+    )
+
+    def config(self, robot: RobotModel) -> np.ndarray:
+        """The validated wire configuration for ``robot``."""
+        return robot.configuration(self.q, self.joint_positions)
