@@ -227,6 +227,29 @@ def test_progress_and_cancel(pc, settings):
     assert not list(settings.data_dir.rglob("*.npz"))
 
 
+def test_corrupt_job_database_is_a_clear_503(pc, settings):
+    """A job database that is not a database: every job route answers 503 problem details
+    naming the file (no 500, no traceback); maps still answer; once it is gone, jobs work."""
+    db = settings.data_dir / "maps" / "jobs.sqlite3"
+    db.parent.mkdir(parents=True, exist_ok=True)
+    db.write_bytes(b"garbage, not SQLite\n" * 100)
+    for method, url in (
+        ("POST", BASE),
+        ("GET", f"{BASE}/jobs"),
+        ("GET", f"{BASE}/jobs/{'a' * 32}"),
+        ("DELETE", f"{BASE}/jobs/{'a' * 32}"),
+    ):
+        r = pc.request(method, url, json=PLANAR_BUILD if method == "POST" else None)
+        assert r.status_code == 503, (method, url, r.text)
+        assert r.headers["content-type"] == "application/problem+json"
+        body = r.json()
+        assert body["status"] == 503 and "jobs.sqlite3" in body["detail"]
+        assert "Traceback" not in r.text
+    assert pc.get(f"{BASE}/maps").status_code == 200
+    db.unlink()
+    build(pc, dict(PLANAR_BUILD, samples=2000))
+
+
 def test_cancel_finished_job_conflicts_and_map_delete(pc):
     j = build(pc, dict(PLANAR_BUILD, samples=2000))
     r = pc.delete(f"{BASE}/jobs/{j['job_id']}")
