@@ -3,11 +3,11 @@ process on the data directory through one SQLite database.
 
 State
 -----
-``<data_dir>/maps/jobs.sqlite3`` (standard library ``sqlite3``, WAL journal, so readers never
-wait for the writer) holds one row per job: its public fields (status, map id, error, the
-progress figures of :meth:`BuildJob.to_json`), ``created_at`` and ``finished_at`` (wall
-clock, s), the ``owner`` (a random id of the :class:`BuildJobs` instance that runs it, one
-per process), the owner's ``heartbeat`` (wall clock, s) and a ``cancel`` flag.
+``<data_dir>/maps/jobs.sqlite3`` (:mod:`app.job_table`: standard library ``sqlite3``, WAL
+journal) holds one row per job: its public fields (status, map id, error, the progress
+figures of :meth:`BuildJob.to_json`), ``created_at`` and ``finished_at`` (wall clock, s),
+the ``owner`` (a random id of the :class:`BuildJobs` instance that runs it, one per
+process), the owner's ``heartbeat`` (wall clock, s) and a ``cancel`` flag.
 
 - The owner writes the row on submit and on every status change (a final state is
   committed before the job reads as finished in memory, so no process sees it finished
@@ -23,8 +23,6 @@ per process), the owner's ``heartbeat`` (wall clock, s) and a ``cancel`` flag.
 - :meth:`BuildJobs.cancel` of another process's job sets the row's cancel flag; the owner
   acts on it within :data:`PUBLISH_INTERVAL` s as on a local cancel.
 
-Each thread uses its own connection (``sqlite3`` connections are not shared across
-threads), with ``busy_timeout`` for writers of other processes; transactions are short.
 A database that cannot be opened, read or written (corrupt, read-only, disk full) raises
 :class:`~app.kinematics.errors.UnavailableError` (503 problem details) on the request that
 needed it; the heartbeat thread logs such failures and keeps the build running.
@@ -46,12 +44,12 @@ import sqlite3
 import threading
 import time
 import uuid
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, replace
 from datetime import UTC, datetime
 from typing import Any
 
+from app.job_table import ACTIVE, DB_FILE, PROGRESS_FIELDS, JobTable
 from app.kinematics.errors import ConflictError, UnavailableError, UnknownNameError
 from app.kinematics.models import RobotModel
 from app.kinematics.reachability.build import Cancelled, Progress, build_map, default_processes
@@ -59,56 +57,13 @@ from app.kinematics.reachability.map import ReachabilityMap, robot_fingerprint, 
 from app.kinematics.reachability.spec import MapSpec
 from app.maps import MapStore, valid_id
 
-#: Statuses of a job that is not finished yet.
-ACTIVE = ("queued", "running")
-STATUSES = (*ACTIVE, "done", "failed", "cancelled")
-#: The database file, in the map store's root (a name no robot directory can take).
-DB_FILE = "jobs.sqlite3"
 #: Seconds between two heartbeats of an active job (and two looks at its cancel flag).
 PUBLISH_INTERVAL = 0.25
 #: A queued or running job whose heartbeat is older than this (s) has lost its owner.
 STALE_SECONDS = 30.0
-#: How long (ms) a connection waits for another process's write transaction.
-BUSY_TIMEOUT_MS = 10_000
 OWNER_GONE = "the worker process building it stopped"
 
 log = logging.getLogger("denavit.reachability")
-
-_SCHEMA = """
-CREATE TABLE IF NOT EXISTS jobs (
-    job_id TEXT PRIMARY KEY,
-    robot_id TEXT NOT NULL,
-    frame TEXT NOT NULL,
-    status TEXT NOT NULL,
-    map_id TEXT,
-    error TEXT,
-    percent REAL NOT NULL,
-    samples_done INTEGER NOT NULL,
-    samples_total INTEGER NOT NULL,
-    samples_per_second REAL,
-    elapsed_seconds REAL NOT NULL,
-    eta_seconds REAL,
-    created_at REAL NOT NULL,
-    finished_at REAL,
-    owner TEXT NOT NULL,
-    heartbeat REAL NOT NULL,
-    cancel INTEGER NOT NULL DEFAULT 0
-);
-CREATE INDEX IF NOT EXISTS jobs_robot ON jobs (robot_id, created_at);
-"""
-_PROGRESS = (
-    "percent",
-    "samples_done",
-    "samples_total",
-    "samples_per_second",
-    "elapsed_seconds",
-    "eta_seconds",
-)
-_COLUMNS = (
-    "job_id", "robot_id", "frame", "status", "map_id", "error", *_PROGRESS,
-    "created_at", "finished_at", "owner", "heartbeat", "cancel",
-)  # fmt: skip
-_ACTIVE_SQL = "('queued', 'running')"
 
 
 @dataclass
@@ -176,7 +131,7 @@ class JobSnapshot:
     @classmethod
     def from_row(cls, row: sqlite3.Row) -> JobSnapshot:
         record = {k: row[k] for k in ("job_id", "robot_id", "frame", "status", "map_id", "error")}
-        record["progress"] = {k: row[k] for k in _PROGRESS}
+        record["progress"] = {k: row[k] for k in PROGRESS_FIELDS}
         return cls(record, row["created_at"], row["finished_at"], row["heartbeat"], row["owner"])
 
     def failed(self, error: str) -> JobSnapshot:
@@ -212,58 +167,14 @@ class BuildJobs:
         self.stale_seconds = stale_seconds
         self.clock = clock
         self.jobs: dict[str, BuildJob] = {}
-        self.path = store.root / DB_FILE
+        self.table = JobTable(store.root / DB_FILE)
         #: This instance's owner id in the database (one instance per process).
         self.owner = uuid.uuid4().hex
-        self._local = threading.local()  # one connection per thread
         self._lock = threading.Lock()  # jobs and their statuses
         self._queue: queue.Queue[tuple[RobotModel, BuildJob]] = queue.Queue()
         self._thread: threading.Thread | None = None
         self._publisher: threading.Thread | None = None
         self._publish_failing = False
-
-    # --------------------------------------------------------------- database
-    def _connect(self) -> sqlite3.Connection:
-        """This thread's connection, opened (and the schema created) on first use."""
-        conn = getattr(self._local, "conn", None)
-        if conn is not None:
-            return conn
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        conn = sqlite3.connect(self.path, timeout=BUSY_TIMEOUT_MS / 1000, isolation_level=None)
-        try:
-            conn.row_factory = sqlite3.Row
-            conn.execute(f"PRAGMA busy_timeout = {BUSY_TIMEOUT_MS}")
-            conn.execute("PRAGMA journal_mode = WAL")
-            conn.execute("PRAGMA synchronous = NORMAL")  # job state is ephemeral
-            conn.executescript(_SCHEMA)
-        except BaseException:
-            conn.close()
-            raise
-        self._local.conn = conn
-        return conn
-
-    @contextmanager
-    def _db(self, write: bool = False) -> Iterator[sqlite3.Connection]:
-        """A short transaction on this thread's connection; database and file-system
-        failures become :class:`UnavailableError` (the connection is dropped, so the next
-        use reopens it)."""
-        try:
-            conn = self._connect()
-            conn.execute("BEGIN IMMEDIATE" if write else "BEGIN")
-            try:
-                yield conn
-            except BaseException:
-                conn.rollback()
-                raise
-            conn.commit()
-        except (sqlite3.Error, OSError) as exc:
-            conn = getattr(self._local, "conn", None)
-            self._local.conn = None
-            if conn is not None:
-                conn.close()
-            raise UnavailableError(
-                f"the build job database {self.path.name} is unusable: {exc}"
-            ) from exc
 
     def _values(self, job: BuildJob) -> dict[str, Any]:
         data = job.to_json()
@@ -277,22 +188,9 @@ class BuildJobs:
             "cancel": 0,
         }
 
-    def _insert(self, conn: sqlite3.Connection, job: BuildJob) -> None:
-        names = ", ".join(_COLUMNS)
-        marks = ", ".join(f":{c}" for c in _COLUMNS)
-        conn.execute(f"INSERT INTO jobs ({names}) VALUES ({marks})", self._values(job))
-
     def _update(self, conn: sqlite3.Connection, job: BuildJob) -> bool:
         """Write the job's state to its row if the row is still active; whether it was."""
-        values = self._values(job)
-        cols = [c for c in _COLUMNS if c not in ("job_id", "created_at", "owner", "cancel")]
-        sets = ", ".join(f"{c} = :{c}" for c in cols)
-        cur = conn.execute(
-            f"UPDATE jobs SET {sets} WHERE job_id = :job_id AND owner = :owner "
-            f"AND status IN {_ACTIVE_SQL}",
-            values,
-        )
-        return cur.rowcount == 1
+        return self.table.update(conn, self._values(job))
 
     def _stale(self, snap: JobSnapshot) -> bool:
         """Whether the row says queued/running but its owner's heartbeat stopped."""
@@ -304,36 +202,18 @@ class BuildJobs:
         gone = [s for s in snaps if self._stale(s)]
         ids = {s.job_id for s in gone}
         if gone:
-            with self._db(write=True) as conn:
-                conn.executemany(
-                    "UPDATE jobs SET status = 'failed', error = :error, eta_seconds = NULL, "
-                    f"finished_at = :heartbeat WHERE job_id = :job_id AND status IN {_ACTIVE_SQL}"
-                    " AND heartbeat = :heartbeat",
-                    [{"error": OWNER_GONE, "heartbeat": s.heartbeat, "job_id": s.job_id}
-                     for s in gone],
-                )  # fmt: skip
+            self.table.fail([(s.job_id, s.heartbeat) for s in gone], OWNER_GONE)
         return [s.failed(OWNER_GONE) if s.job_id in ids else s for s in snaps]
 
     def _read(self, job_id: str) -> JobSnapshot | None:
         """The row of ``job_id`` (a valid id), resolved; ``None`` if there is none."""
-        with self._db() as conn:
-            row = conn.execute("SELECT * FROM jobs WHERE job_id = ?", (job_id,)).fetchone()
+        row = self.table.read(job_id)
         return None if row is None else self._resolved([JobSnapshot.from_row(row)])[0]
 
     def _rows(self, robot_id: str, skip: set[str]) -> list[JobSnapshot]:
         """The robot's rows but those of ``skip`` (job ids), resolved."""
-        with self._db() as conn:
-            rows = conn.execute("SELECT * FROM jobs WHERE robot_id = ?", (robot_id,)).fetchall()
+        rows = self.table.rows(robot_id)
         return self._resolved([JobSnapshot.from_row(r) for r in rows if r["job_id"] not in skip])
-
-    def _housekeep(self, conn: sqlite3.Connection) -> None:
-        """Delete the oldest finished rows beyond ``max_jobs``."""
-        conn.execute(
-            f"DELETE FROM jobs WHERE status NOT IN {_ACTIVE_SQL} AND job_id NOT IN "
-            f"(SELECT job_id FROM jobs WHERE status NOT IN {_ACTIVE_SQL} "
-            "ORDER BY created_at DESC LIMIT ?)",
-            (self.max_jobs,),
-        )
 
     # ------------------------------------------------------------------- jobs
     def submit(self, robot: RobotModel, spec: MapSpec) -> BuildJob:
@@ -347,9 +227,9 @@ class BuildJobs:
             job = BuildJob(
                 uuid.uuid4().hex, robot.id, spec, Progress(spec.samples), created_at=self.clock()
             )
-            with self._db(write=True) as conn:
-                self._insert(conn, job)
-                self._housekeep(conn)
+            with self.table.transaction(write=True) as conn:
+                self.table.insert(conn, self._values(job))
+                self.table.housekeep(conn, self.max_jobs)
             for old in [i for i in self.jobs if i not in active]:
                 if len(self.jobs) < self.max_jobs:
                     break
@@ -396,21 +276,20 @@ class BuildJobs:
                 self._publish_failing = False
 
     def _heartbeat(self, active: list[BuildJob]) -> None:
-        with self._lock, self._db(write=True) as conn:
+        with self._lock, self.table.transaction(write=True) as conn:
             for job in active:
                 if job.status not in ACTIVE:
                     continue
                 if not self._update(conn, job):  # failed by another process (stale owner)
                     self._adopt(conn, job)
                     continue
-                row = conn.execute("SELECT cancel FROM jobs WHERE job_id = ?", (job.job_id,))
-                if row.fetchone()[0]:
+                if self.table.row(conn, job.job_id)["cancel"]:
                     self._cancel(job, conn)
 
     def _adopt(self, conn: sqlite3.Connection, job: BuildJob) -> None:
         """Take over the final state another process gave the row of an own job (lock
         held), and stop the build."""
-        row = conn.execute("SELECT * FROM jobs WHERE job_id = ?", (job.job_id,)).fetchone()
+        row = self.table.row(conn, job.job_id)
         job.progress.cancel.set()
         if job.progress.finished is None:
             job.progress.finished = time.monotonic()
@@ -450,8 +329,7 @@ class BuildJobs:
             if job.status in ("done", "failed"):
                 raise ConflictError(f"the job has already {job.status}", "job_id")
             if job.status in ACTIVE:
-                with self._db(write=True) as conn:
-                    conn.execute("UPDATE jobs SET cancel = 1 WHERE job_id = ?", (job_id,))
+                self.table.request_cancel(job_id)
             return job
         with self._lock:
             if job.status in ("done", "failed"):
@@ -495,7 +373,7 @@ class BuildJobs:
         """:meth:`_finish` in its own transaction (lock held); if the database fails, the
         job still ends in memory (this process answers for it) and the failure is logged."""
         try:
-            with self._db(write=True) as conn:
+            with self.table.transaction(write=True) as conn:
                 self._finish(job, conn, status, map_id, error)
         except UnavailableError as exc:
             log.warning("cannot record the end of build job %s: %s", job.job_id, exc.message)
@@ -509,7 +387,7 @@ class BuildJobs:
             if job.status != "queued":  # cancelled while queued
                 return
             try:
-                with self._db(write=True) as conn:
+                with self.table.transaction(write=True) as conn:
                     if not self._update(conn, replace(job, status="running")):
                         self._adopt(conn, job)
                         return

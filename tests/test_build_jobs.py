@@ -11,7 +11,8 @@ import time
 import numpy as np
 import pytest
 
-from app.build_jobs import DB_FILE, OWNER_GONE, STALE_SECONDS, BuildJobs, JobSnapshot
+from app.build_jobs import OWNER_GONE, STALE_SECONDS, BuildJobs, JobSnapshot
+from app.job_table import DB_FILE
 from app.kinematics.errors import ConflictError, UnavailableError, UnknownNameError
 from app.kinematics.models import RobotModel
 from app.kinematics.reachability.build import build_map

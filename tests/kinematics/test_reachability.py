@@ -87,6 +87,26 @@ def test_orientation_bins_consistent_and_cover(d):
         assert counts.max() / counts.min() < 2.6
 
 
+def test_orientation_bin_documented_layout():
+    """Bins worked out by hand from the module doc (d = 4): index k·d³ + i₀·d² + i₁·d + i₂,
+    a_i = arctan(q_i/q_k), i = ⌊(a/(π/2) + 1/2)·d⌋; for face w a rotation θ about x has
+    a₀ = θ/2."""
+    s60, c60 = math.sin(math.radians(30)), math.cos(math.radians(30))
+    cases = {
+        (0.0, 0.0, 0.0, 1.0): 3 * 64 + 2 * 16 + 2 * 4 + 2,  # identity: face w, centre
+        (s60, 0.0, 0.0, c60): 3 * 64 + 3 * 16 + 2 * 4 + 2,  # 60° about x: a₀ = 30°
+        (0.0, -s60, 0.0, c60): 3 * 64 + 2 * 16 + 0 * 4 + 2,  # −60° about y: a₁ = −30°
+        (0.0, 0.0, s60, -c60): 3 * 64 + 2 * 16 + 2 * 4 + 0,  # −q of −60° about z: flipped
+        (1.0, 0.0, 0.0, 0.0): 0 * 64 + 2 * 16 + 2 * 4 + 2,  # 180° about x: face x
+        (0.0, 0.0, 1.0, 0.0): 2 * 64 + 2 * 16 + 2 * 4 + 2,  # 180° about z: face z
+    }
+    q = np.array(list(cases), dtype=float)
+    expected = np.array(list(cases.values()))
+    np.testing.assert_array_equal(orientation_bin(q, 4), expected)
+    R = quaternion_to_matrix(q).transpose(1, 2, 0)
+    np.testing.assert_array_equal(orientation_bin_from_rotation(R, 4), expected)
+
+
 def test_orientation_bin_neighbours_are_close():
     """Rotations in one bin stay close (d = 4: a bin spans about 45° per axis)."""
     q = random_quaternions(20_000, seed=1)
@@ -128,15 +148,23 @@ def test_planar_map_is_the_annulus(planar):
 
 
 def test_planar_exact_manipulability_at_sampled_cells(planar):
-    """Map values are the Yoshikawa index of samples: check samples against the analysis."""
+    """Each sample's cell and value against the closed form: the tip at
+    (l1·c1 + l2·c12, l1·s1 + l2·s12, 0) lands in voxel ⌊(p − lower)/s⌋ with value
+    l1·l2·|sin θ2| (float32), sample by sample (one orientation bin, all in the box)."""
     spec = planar_spec(planar, samples=4096)
-    builder = MapBuilder(planar, spec)
-    cells, vals = builder.cells(0, 4096)
+    cells, vals = MapBuilder(planar, spec).cells(0, 4096)
     Q = chunk_samples(spec, 0, 4096)
+    t1, t2 = Q[:, 0], Q[:, 1]
+    x = L1 * np.cos(t1) + L2 * np.cos(t1 + t2)
+    y = L1 * np.sin(t1) + L2 * np.sin(t1 + t2)
+    ix = np.floor((x + 1.6) / 0.05).astype(int)
+    iy = np.floor((y + 1.6) / 0.05).astype(int)
+    assert spec.shape == [64, 64, 1] and vals.size == 4096
+    np.testing.assert_array_equal(cells, ix * 64 + iy)  # (x, y, z = 0) row-major, 1 bin
+    np.testing.assert_allclose(vals, L1 * L2 * np.abs(np.sin(t2)), rtol=1e-6, atol=1e-7)
     for i in range(0, 4096, 512):
         exact = compute_manipulability(planar, Q[i], "tip", rows=["vx", "vy"]).yoshikawa
-        assert exact == pytest.approx(L1 * L2 * abs(math.sin(Q[i, 1])), abs=1e-12)
-    assert vals.max() <= L1 * L2 + 1e-6 and vals.size == 4096  # all in the box
+        assert vals[i] == pytest.approx(exact, rel=1e-6, abs=1e-7)
 
 
 def test_grid_sampling_lattice(planar):
