@@ -19,14 +19,14 @@ from app.kinematics.reachability.build import build_map
 from app.kinematics.reachability.map import ReachabilityMap, summarize
 from app.kinematics.reachability.spec import make_spec
 from app.maps import MapStore
-from tests.kinematics.test_analysis import planar2_urdf
+from tests.kinematics.chains import planar_2link
 
 ROBOT = "planar2_test"
 
 
 @pytest.fixture(scope="module")
 def planar() -> RobotModel:
-    return RobotModel(ROBOT, planar2_urdf(), ee_frame="tip")
+    return RobotModel(ROBOT, planar_2link(0.9, 0.6, name=ROBOT), ee_frame="tip")
 
 
 def planar_spec(robot, **kw):
