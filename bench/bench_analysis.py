@@ -22,12 +22,8 @@ import numpy as np
 import orjson
 import pinocchio as pin
 
-from app.kinematics.reachability import (
-    MapBuilder,
-    build_map,
-    default_processes,
-    make_spec,
-)
+from app.kinematics.reachability.build import MapBuilder, build_map, default_processes
+from app.kinematics.reachability.spec import make_spec
 from app.registry import Registry
 
 ROBOTS = ("panda", "ur5")

@@ -5,12 +5,10 @@ processes, resource tracker, workers), checked in the process table (/proc)."""
 from __future__ import annotations
 
 import contextlib
-import json
 import os
 import signal
 import sys
 import time
-from pathlib import Path
 
 import httpx
 import pytest
@@ -90,24 +88,20 @@ def server_pid(url: str) -> int:
     raise AssertionError(f"no uvicorn process for {url}")
 
 
-def start_long_build(url: str, data: Path) -> tuple[int, set[int]]:
+def start_long_build(url: str) -> tuple[int, set[int]]:
     """Post :data:`LONG_BUILD`; once its build processes run, the pid of the worker that owns
-    the job and that worker's descendants (forkserver, build processes...)."""
+    the job (the server process, or the worker with a forkserver child whose build processes
+    run) and that worker's descendants (forkserver, build processes...)."""
     r = httpx.post(url + BASE, json=LONG_BUILD, timeout=30)
     assert r.status_code == 202, r.text
-    job_file = data / "maps" / ".jobs" / f"{r.json()['job_id']}.json"
     end = time.monotonic() + 120
     while True:
-        owner, tree = 0, set()
-        with contextlib.suppress(OSError, ValueError, KeyError):
-            record = json.loads(job_file.read_bytes())
-            owner = record["owner_pid"] if record["status"] == "running" else 0
-        if owner:
-            tree = descendants(owner)
-            # the forkserver and its build processes (at least 2 processes below the owner)
+        server = server_pid(url)
+        tree = {server} | descendants(server)
+        for owner in sorted(tree):
             forkservers = [p for p in tree if "forkserver" in cmdline(p) and parent(p) == owner]
             if forkservers and descendants(forkservers[0]):
-                return owner, tree
+                return owner, descendants(owner)
         assert time.monotonic() < end, f"the build processes did not start: {tree}"
         time.sleep(0.1)
 
@@ -133,7 +127,7 @@ def test_killing_the_build_owner_leaves_no_process(tmp_path, workers) -> None:
     args = ("--workers", "2") if workers == 2 else ()
     with serve(data, *args) as server:
         url = server.url
-        owner, tree = start_long_build(url, data)
+        owner, tree = start_long_build(url)
         assert owner == server_pid(url) if workers == 1 else owner in descendants(server_pid(url))
         os.kill(owner, signal.SIGKILL)
         left = wait_gone(tree)
@@ -148,7 +142,7 @@ def test_killing_the_supervisor_leaves_no_process(tmp_path) -> None:
     with serve(data, "--workers", "2") as server:
         url = server.url
         master = server_pid(url)
-        start_long_build(url, data)
+        start_long_build(url)
         tree = descendants(master)
         assert len(tree) >= 4  # 2 workers, a forkserver, build processes
         os.kill(master, signal.SIGKILL)

@@ -23,6 +23,7 @@ from app.kinematics.errors import (
     ForbiddenError,
     InvalidInputError,
     KinematicsError,
+    UnavailableError,
     UnknownNameError,
 )
 from app.kinematics.text import printable
@@ -143,6 +144,7 @@ _STATUS = {
     ConflictError: (409, "conflict"),
     ForbiddenError: (403, "forbidden"),
     InvalidInputError: (422, "invalid-input"),
+    UnavailableError: (503, "unavailable"),
 }
 
 

@@ -10,19 +10,18 @@
 - POST   /robots/{robot_id}/reachability/query                poses → reachable, manipulability
 - GET    /robots/{robot_id}/reachability/maps/{map_id}/slice.png   heat map of one voxel layer
 
-The grid, orientation bins, sampling and storage are described in
-:mod:`app.kinematics.reachability`. A build runs in the worker process that accepted it,
-which publishes the job's status under ``DENAVIT_DATA_DIR/maps/.jobs``: with several
-uvicorn workers any worker answers (and cancels) any job. A job whose worker stopped
-reads as failed; finished maps are files under ``DENAVIT_DATA_DIR/maps`` and survive
+The grid, orientation bins and sampling are described in :mod:`app.kinematics.reachability`,
+storage in :mod:`app.maps`, jobs in :mod:`app.build_jobs`, the PNG in :mod:`app.api.images`.
+A build runs in the worker process that accepted it, which keeps the job's state in the
+SQLite database ``DENAVIT_DATA_DIR/maps/jobs.sqlite3``: with several uvicorn workers any
+worker answers (and cancels) any job. A job whose worker stopped reads as failed once its
+heartbeat is stale; finished maps are files under ``DENAVIT_DATA_DIR/maps`` and survive
 restarts.
 """
 
 from __future__ import annotations
 
-import struct
 import threading
-import zlib
 from typing import Annotated, Literal
 
 import numpy as np
@@ -35,24 +34,23 @@ from starlette.responses import Response
 from app.api.body import body_schema, decode_body, finite_matrix
 from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
+from app.api.images import png_bytes, slice_image
 from app.api.offload import offload
 from app.api.responses import ORJSONResponse
 from app.api.schemas import Finite, Quat, RobotId, Schema, Vec3
 from app.api.security import require_token
+from app.build_jobs import BuildJobs
 from app.kinematics.analysis import Part
 from app.kinematics.errors import ConflictError, InvalidInputError
-from app.kinematics.reachability import (
+from app.kinematics.reachability.map import ReachabilityMap, meta_public, robot_fingerprint
+from app.kinematics.reachability.spec import (
     MAX_ORIENTATION_DIVISIONS,
     MAX_SAMPLES,
-    BuildJobs,
-    MapStore,
-    ReachabilityMap,
     make_spec,
-    meta_public,
-    robot_fingerprint,
     self_collision_check,
 )
 from app.kinematics.rotations import unit_quaternions
+from app.maps import MapStore
 from app.registry import Registry
 
 router = APIRouter(prefix="/robots/{robot_id}/reachability", tags=["reachability"])
@@ -256,7 +254,7 @@ async def build_reachability_map(
         make = self_collision_check()
         await offload(make, robot, spec.self_collision)
     _, jobs = _state(request)
-    # job files are read and written: off the event loop (short work, not the bounded pool)
+    # the job database is read and written: off the event loop (short work, not the bounded pool)
     job = await run_in_threadpool(jobs.submit, robot, spec)
     return ORJSONResponse(
         job.to_json(),
@@ -457,73 +455,6 @@ async def query_reachability(
             "in_bounds": ok,
         }
     )
-
-
-# ---------------------------------------------------------------------------- PNG
-#: Viridis, sampled at six points (low → high manipulability).
-_VIRIDIS = np.array(
-    [[68, 1, 84], [65, 68, 135], [42, 120, 142], [34, 168, 132], [122, 209, 81], [253, 231, 37]],
-    dtype=float,
-)
-UNREACHED_RGB = (235, 235, 235)
-
-
-def colour_map(values: np.ndarray, vmax: float) -> np.ndarray:
-    """RGB (…, 3) uint8: viridis over [0, vmax]; negative values (unreached) light grey."""
-    t = np.clip(values / vmax, 0.0, 1.0) if vmax > 0 else np.zeros_like(values)
-    x = t * (len(_VIRIDIS) - 1)
-    i = np.minimum(np.floor(x).astype(int), len(_VIRIDIS) - 2)
-    f = (x - i)[..., None]
-    rgb = _VIRIDIS[i] * (1 - f) + _VIRIDIS[i + 1] * f
-    rgb[values < 0] = UNREACHED_RGB
-    return np.round(rgb).astype(np.uint8)
-
-
-def png_bytes(rgb: np.ndarray) -> bytes:
-    """An 8-bit RGB PNG (zlib + struct; filter 0 on every row)."""
-    h, w, _ = rgb.shape
-    raw = b"".join(b"\x00" + rgb[r].tobytes() for r in range(h))
-
-    def chunk(kind: bytes, data: bytes) -> bytes:
-        return (
-            struct.pack(">I", len(data))
-            + kind
-            + data
-            + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-        )
-
-    return (
-        b"\x89PNG\r\n\x1a\n"
-        + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-        + chunk(b"IDAT", zlib.compress(raw, 6))
-        + chunk(b"IEND", b"")
-    )
-
-
-def slice_image(m: ReachabilityMap, axis: int, value: float, scale: int | None) -> np.ndarray:
-    """RGB image of the voxel layer containing ``value`` along ``axis`` (0 x, 1 y, 2 z).
-
-    Colour = best manipulability over orientations in the voxel. Horizontal axis: the
-    first remaining axis (x for z and y slices, y for x slices), increasing to the right;
-    vertical: the second, increasing upwards.
-    """
-    spec = m.spec
-    name = "xyz"[axis]
-    lo, hi = spec.lower[axis], spec.upper[axis]
-    if not lo <= value < hi:
-        raise InvalidInputError(f"{value} is outside the map's {name} range [{lo}, {hi})", name)
-    i = min(int(np.floor((value - lo) / spec.voxel_size)), spec.shape[axis] - 1)
-    if not 0 <= i < spec.shape[axis]:
-        raise InvalidInputError(
-            f"{value} is outside the map's {name} range [{lo}, {spec.upper[axis]})", name
-        )
-    layer = np.take(m.voxel_best(), i, axis=axis)  # (first, second) remaining axes
-    img_vals = layer.T[::-1]  # rows: second axis, top = largest
-    vmax = m.meta.get("max_manipulability") or 0.0
-    rgb = colour_map(img_vals.astype(float), float(vmax))
-    if scale is None:
-        scale = max(1, min(32, 512 // max(rgb.shape[0], rgb.shape[1])))
-    return np.repeat(np.repeat(rgb, scale, axis=0), scale, axis=1)
 
 
 @router.get(

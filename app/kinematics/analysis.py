@@ -338,6 +338,50 @@ def manipulability_batch(
     }
 
 
+def yoshikawa_batch(J: np.ndarray) -> np.ndarray:
+    """∏σ_i of each (m, k) matrix of J (N, m, k): √det of the smaller Gram matrix."""
+    m, k = J.shape[1], J.shape[2]
+    G = J @ np.swapaxes(J, 1, 2) if m <= k else np.swapaxes(J, 1, 2) @ J
+    return np.sqrt(np.maximum(np.linalg.det(G), 0.0))
+
+
+def yoshikawa_components(J: np.ndarray) -> np.ndarray:
+    """∏σ_i for component-major Jacobians J (m, k, N), elementwise over N.
+
+    The smaller Gram matrix G (J·Jᵀ if m ≤ k, else Jᵀ·J) is factored G = L·D·Lᵀ
+    (Cholesky without square roots); w = √∏D_i. A pivot at or below 1e-13 of the largest
+    diagonal entry marks a singular G (w = 0): the map's values are float32 anyway.
+    """
+    m, k = J.shape[0], J.shape[1]
+    A = J if m <= k else J.transpose(1, 0, 2)
+    r = A.shape[0]
+    G = [[None] * r for _ in range(r)]
+    for i in range(r):
+        for j in range(i + 1):
+            G[i][j] = np.einsum("kn,kn->n", A[i], A[j])
+    scale = np.max(np.stack([G[i][i] for i in range(r)]), axis=0)
+    floor = 1e-13 * scale
+    L = [[None] * r for _ in range(r)]
+    D: list[np.ndarray] = []  # pivots, 0 where singular
+    inv: list[np.ndarray] = []  # 1/pivot, 0 where singular (that column of L is then 0)
+    det = np.ones(A.shape[2])
+    for i in range(r):
+        for j in range(i):
+            v = G[i][j].copy()
+            for l in range(j):
+                v -= L[i][l] * L[j][l] * D[l]
+            L[i][j] = v * inv[j]
+        d = G[i][i].copy()
+        for l in range(i):
+            d -= L[i][l] * L[i][l] * D[l]
+        good = d > floor
+        d = np.where(good, d, 0.0)
+        det *= d
+        D.append(d)
+        inv.append(np.divide(1.0, d, out=np.zeros_like(d), where=good))
+    return np.sqrt(det)
+
+
 @dataclass
 class Statics:
     """Joint torques and the wrench at the frame, related by τ = Jᵀ·F."""

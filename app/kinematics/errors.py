@@ -45,6 +45,11 @@ class ForbiddenError(KinematicsError):
     """The operation is not allowed on this resource (e.g. deleting a built-in robot)."""
 
 
+class UnavailableError(KinematicsError):
+    """A resource the service needs cannot be used right now (e.g. a database file that is
+    corrupt or not writable): the request may succeed once an operator has fixed it."""
+
+
 class Cancelled(Exception):  # noqa: N818 - an outcome, not a fault of the request
     """The caller withdrew the work (e.g. its HTTP client disconnected): it stopped early.
 

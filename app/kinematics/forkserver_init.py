@@ -1,6 +1,6 @@
 """Preloaded by the forkserver of reachability builds: the forkserver dies with its parent.
 
-:func:`app.kinematics.reachability._context` names this module first in
+:func:`app.kinematics.reachability.build._context` names this module first in
 ``set_forkserver_preload``, so the forkserver, started by the thread that runs a build in a
 server worker, gets ``PR_SET_PDEATHSIG`` = SIGKILL: when that worker is killed, the kernel
 kills the forkserver, and the build processes forked from it (which set the same signal

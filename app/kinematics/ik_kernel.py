@@ -11,7 +11,7 @@ mistake here can cost solve rate or time, never a wrong answer.
 
 Kinematics
 ----------
-The chain is :class:`app.kinematics.reachability.ChainJacobian`'s: every joint rewritten in
+The chain is :class:`app.kinematics.chain.SerialChain`'s: every joint rewritten in
 a frame whose z axis is its axis, so with the running rotation R and position p (root
 frame), joint j applies its fixed placement (p += R·t_j, R = R·C_j), then its motion about
 or along z: R = R·Rz(q_j) (revolute, continuous) or p += q_j·R e_z (prismatic). After the
@@ -38,6 +38,8 @@ import math
 import threading
 
 import numpy as np
+
+from app.kinematics.chain import SerialChain
 
 try:  # pragma: no cover - numba is a pinned dependency; the fallback is the Python loop
     import numba
@@ -395,9 +397,7 @@ class CompiledChain:
     def build(cls, robot, frame: str, active: np.ndarray) -> CompiledChain | None:
         """The chain of ``frame`` if its joints, in chain order, are exactly ``active``
         (wire indices) and all 1-DoF (no mimic, no multi-DoF joints); else ``None``."""
-        from app.kinematics.reachability import ChainJacobian
-
-        cj = ChainJacobian.build(robot, frame)
+        cj = SerialChain.build(robot, frame)
         if cj is None or not np.array_equal(cj.wire, active) or not cj.steps:
             return None
         return cls(

@@ -248,8 +248,8 @@ def test_pinocchio_chain_of_a_one_dof_mimic_robot() -> None:
     """Reachability's per-sample Pinocchio path (mimic chains) on nv = 1: J against the
     derivative of the closed form, dp/dθ = A(−sin θ, cos θ, 0) + 2B(−sin 2θ, cos 2θ, 0),
     ω = (0, 0, 2)."""
+    from app.kinematics.chain import PinocchioChain, chain_for
     from app.kinematics.models import RobotModel
-    from app.kinematics.reachability import PinocchioChain, chain_for
 
     robot = RobotModel("m1", M1, ee_frame="tip")
     ch = chain_for(robot, "tip")

@@ -161,17 +161,42 @@ def png_pixels(data: bytes) -> np.ndarray:
     return np.array([list(row[1:]) for row in rows], dtype=np.uint8).reshape(h, w, 3)
 
 
-def test_slice_png(pc):
+def pixel(lower: float, upper: float, value: float, scale: int, flip: bool = False) -> int:
+    """Pixel index (column, or row with ``flip``: row 0 is the top, the largest value) of the
+    centre of the voxel holding ``value``, voxels of 0.05 m from ``lower`` to ``upper``."""
+    n = round((upper - lower) / 0.05)
+    i = math.floor((value - lower) / 0.05)
+    return ((n - 1 - i) if flip else i) * scale + scale // 2
+
+
+def test_slice_png(pc, app):
+    """Orientation of the image against the geometry: the planar arm's base is moved to
+    (0.625, 0.325), so the unreachable hole of its annulus (r < |l1 − l2| = 0.2) lies off
+    every axis of symmetry of the image. Columns: x (z slice) or y (x slice) increasing to
+    the right; rows: y (z slice) or z (x slice) increasing upwards (row 0 at the top)."""
+    cx, cy = 0.625, 0.325
+    add_planar(app, planar2_urdf(base_xyz=(cx, cy, 0.0)))
     j = build(pc)
+    grey = (235, 235, 235)
     r = pc.get(f"{BASE}/maps/{j['map_id']}/slice.png", params={"z": 0.0, "scale": 2})
     assert r.status_code == 200 and r.headers["content-type"] == "image/png"
     img = png_pixels(r.content)
     assert img.shape == (128, 128, 3)
-    grey = (235, 235, 235)
-    assert tuple(img[64, 64]) == grey  # centre: r < |l1 − l2|
-    assert tuple(img[0, 0]) == grey  # corner: r > l1 + l2
-    # x = 1.05 (voxel 53), y = 0.025 (voxel 32, row 63 - 32 = 31): inside, coloured
-    assert tuple(img[2 * 31, 2 * 53]) != grey
+
+    def at(x: float, y: float) -> tuple[int, ...]:
+        return tuple(img[pixel(-1.6, 1.6, y, 2, flip=True), pixel(-1.6, 1.6, x, 2)])
+
+    assert at(cx, cy) == grey  # the hole
+    # its mirror images (left-right, up-down, both, transposed) are well inside the annulus
+    for x, y in ((-cx, cy), (cx, -cy), (-cx, -cy), (cy, cx)):
+        assert math.hypot(x - cx, y - cy) > 0.4 and at(x, y) != grey, (x, y)
+    assert at(cx - 1.0, cy) != grey and at(cx - 1.9, cy) == grey  # r = 1.0; r = 1.9 > 1.8
+    # an x slice through the hole: columns are y, one row (z)
+    r = pc.get(f"{BASE}/maps/{j['map_id']}/slice.png", params={"x": cx, "scale": 2})
+    img = png_pixels(r.content)
+    assert img.shape == (2, 128, 3)
+    assert tuple(img[1, pixel(-1.6, 1.6, cy, 2)]) == grey
+    assert tuple(img[1, pixel(-1.6, 1.6, -cy, 2)]) != grey
     r = pc.get(f"{BASE}/maps/{j['map_id']}/slice.png", params={"x": 0.5})
     assert r.status_code == 200 and png_pixels(r.content).shape[1] == 512
 
@@ -200,6 +225,29 @@ def test_progress_and_cancel(pc, settings):
     assert pc.delete(f"{BASE}/jobs/{job_id}").status_code == 200  # idempotent
     assert pc.get(f"{BASE}/maps").json()["maps"] == []
     assert not list(settings.data_dir.rglob("*.npz"))
+
+
+def test_corrupt_job_database_is_a_clear_503(pc, settings):
+    """A job database that is not a database: every job route answers 503 problem details
+    naming the file (no 500, no traceback); maps still answer; once it is gone, jobs work."""
+    db = settings.data_dir / "maps" / "jobs.sqlite3"
+    db.parent.mkdir(parents=True, exist_ok=True)
+    db.write_bytes(b"garbage, not SQLite\n" * 100)
+    for method, url in (
+        ("POST", BASE),
+        ("GET", f"{BASE}/jobs"),
+        ("GET", f"{BASE}/jobs/{'a' * 32}"),
+        ("DELETE", f"{BASE}/jobs/{'a' * 32}"),
+    ):
+        r = pc.request(method, url, json=PLANAR_BUILD if method == "POST" else None)
+        assert r.status_code == 503, (method, url, r.text)
+        assert r.headers["content-type"] == "application/problem+json"
+        body = r.json()
+        assert body["status"] == 503 and "jobs.sqlite3" in body["detail"]
+        assert "Traceback" not in r.text
+    assert pc.get(f"{BASE}/maps").status_code == 200
+    db.unlink()
+    build(pc, dict(PLANAR_BUILD, samples=2000))
 
 
 def test_cancel_finished_job_conflicts_and_map_delete(pc):

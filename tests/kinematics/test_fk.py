@@ -88,7 +88,7 @@ def test_quaternion_convention_against_pinocchio() -> None:
 
 @pytest.mark.parametrize("robot_id", CATALOG)
 def test_vectorised_batch_equals_pinocchio(registry, robot_id: str) -> None:
-    """BatchChain (NumPy) agrees with Pinocchio's FK on every link of every catalog robot."""
+    """SerialChain (app.kinematics.chain) agrees with Pinocchio on every link of every robot."""
     robot = registry.get(robot_id)
     qs = random_configurations(robot, 25, seed=9)
     for frame in [f.name for f in robot.frames if f.kind == "link"]:
