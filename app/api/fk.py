@@ -101,7 +101,7 @@ async def compute_fk_batch(
 
     The body (up to ``DENAVIT_MAX_BATCH`` configurations) is decoded and computed in the
     work pool: decoding takes orjson and one NumPy conversion, and FK of serial chains is
-    vectorised (see ``app.kinematics.fk.BatchChain``).
+    vectorised (see ``app.kinematics.chain.SerialChain``).
     """
     robot = await load_robot(reg, robot_id)
     raw = await request.body()
