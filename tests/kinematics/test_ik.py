@@ -20,6 +20,9 @@ from hypothesis import strategies as st
 from app.kinematics import ik
 from app.kinematics.analytic_ik import into_limits, planar2_geometry, planar2_solutions
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik.problem import IKOptions
+from app.kinematics.ik.search import DISTINCT
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
 
@@ -110,7 +113,9 @@ def test_reachable_targets_are_solved(
     robot = registry.get(robot_id)
     q_true = random_q(robot, np.random.default_rng(seed))
     target = reference_pose(robot, q_true, frame)
-    res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS, analytic=analytic)
+    res = ik.solve(
+        robot, se3(target), IKOptions(frame=frame, timeout_ms=BUDGET_MS, analytic=analytic)
+    )
     assert res.method == ("analytic" if analytic and robot_id == "ur5" else "numeric")
     assert res.success, (res.status, res.position_error, res.orientation_error)
     assert res.status == "converged"
@@ -129,13 +134,15 @@ def test_several_distinct_solutions_sorted_by_seed_distance(registry) -> None:
     q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
     target = reference_pose(robot, q_true, "tool0")
     seed = q_true + 0.05
-    res = ik.solve(robot, "tool0", se3(target), seed=seed, num_solutions=4, timeout_ms=2000)
+    res = ik.solve(
+        robot, se3(target), IKOptions(frame="tool0", num_solutions=4, timeout_ms=2000), seed=seed
+    )
     assert res.success and len(res.solutions) >= 2
     dists = [np.linalg.norm(s.q - seed) for s in res.solutions]
     assert dists == sorted(dists)
     for a in range(len(res.solutions)):
         for b in range(a):
-            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > ik.DISTINCT
+            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > DISTINCT
         dp, dr = pose_error(reference_pose(robot, res.solutions[a].q, "tool0"), target)
         assert dp <= TOL and dr <= TOL
 
@@ -149,7 +156,9 @@ def test_ur_closed_form_finds_all_branches(registry, robot_id: str, frame: str) 
     robot = registry.get(robot_id)
     q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
     target = reference_pose(robot, q_true, frame)
-    res = ik.solve(robot, frame, se3(target), num_solutions=8, timeout_ms=BUDGET_MS)
+    res = ik.solve(
+        robot, se3(target), IKOptions(frame=frame, num_solutions=8, timeout_ms=BUDGET_MS)
+    )
     assert res.method == "analytic" and len(res.solutions) == 8
     assert any(np.allclose(s.q, q_true, atol=1e-9) for s in res.solutions)
     for s in res.solutions:
@@ -173,7 +182,9 @@ def test_ur_closed_form_on_z1_respects_narrow_limits(registry) -> None:
     for _ in range(5):
         q_true = random_q(robot, rng)
         target = reference_pose(robot, q_true, frame)
-        res = ik.solve(robot, frame, se3(target), num_solutions=2, timeout_ms=100.0)
+        res = ik.solve(
+            robot, se3(target), IKOptions(frame=frame, num_solutions=2, timeout_ms=100.0)
+        )
         assert res.success and res.method.startswith("analytic")
         for s in res.solutions:
             assert within_limits(robot, s.q)
@@ -188,7 +199,7 @@ def test_ur_geometry_is_detected_only_where_it_applies(registry) -> None:
     for rid, expected in cases:
         robot = registry.get(rid)
         frame = "panda_link8" if rid == "panda" else robot.ee_frame
-        ch = ik.chain(robot, frame)
+        ch = ik_chain(robot, frame)
         assert (ur_geometry(robot, ch.active, ch.frame_id) is not None) == expected, rid
 
 
@@ -207,7 +218,7 @@ def _planar_closed_form(l1: float, l2: float, x: float, y: float) -> set[tuple[f
 def test_planar2_returns_both_elbow_solutions(registry, x: float, y: float) -> None:
     robot = registry.get("planar2")  # DH: l1 = 1.0, l2 = 0.8, frame tool at the tip
     target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
-    res = ik.solve(robot, robot.ee_frame, target, mode="position", num_solutions=2)
+    res = ik.solve(robot, target, IKOptions(frame=robot.ee_frame, mode="position", num_solutions=2))
     assert res.success and len(res.solutions) == 2
     got = {(round(s.q[0], 9), round(s.q[1], 9)) for s in res.solutions}
     assert got == _planar_closed_form(1.0, 0.8, x, y)
@@ -235,7 +246,7 @@ def test_planar2_closed_form_in_a_general_placement() -> None:
     robot = RobotModel("tilted2", _tilted_planar_urdf(), ee_frame="tool")
     q_true = np.array([0.7, -1.2])
     target = reference_pose(robot, q_true, "tool")
-    res = ik.solve(robot, "tool", se3(target), mode="position", num_solutions=2)
+    res = ik.solve(robot, se3(target), IKOptions(frame="tool", mode="position", num_solutions=2))
     assert res.method == "analytic" and len(res.solutions) == 2
     assert any(np.allclose(s.q, q_true, atol=1e-9) for s in res.solutions)
     for s in res.solutions:
@@ -262,7 +273,7 @@ def test_into_limits() -> None:
 def test_target_outside_workspace_returns_best_effort(registry) -> None:
     robot = registry.get("ur5")
     target = pin.SE3(np.eye(3), np.array([3.0, 0.0, 0.5]))  # UR5 reach is ~0.85 m
-    res = ik.solve(robot, "tool0", target, timeout_ms=20.0)
+    res = ik.solve(robot, target, IKOptions(frame="tool0", timeout_ms=20.0))
     assert not res.success and res.solutions == []
     assert res.status == "timeout"
     assert within_limits(robot, res.q)
@@ -274,14 +285,14 @@ def test_target_outside_workspace_returns_best_effort(registry) -> None:
 def test_iteration_cap_reports_not_converged(registry) -> None:
     robot = registry.get("ur5")
     target = pin.SE3(np.eye(3), np.array([3.0, 0.0, 0.5]))
-    res = ik.solve(robot, "tool0", target, timeout_ms=1000.0, max_iterations=25)
+    res = ik.solve(robot, target, IKOptions(frame="tool0", timeout_ms=1000.0, max_iterations=25))
     assert not res.success and res.status == "not_converged" and res.iterations == 25
 
 
 def test_planar2_unreachable_is_not_a_success(registry) -> None:
     robot = registry.get("planar2")
     target = pin.SE3(np.eye(3), np.array([2.5, 0.0, 0.0]))
-    res = ik.solve(robot, robot.ee_frame, target, mode="position", timeout_ms=10.0)
+    res = ik.solve(robot, target, IKOptions(frame=robot.ee_frame, mode="position", timeout_ms=10.0))
     assert not res.success
     # The best effort stretches towards the target: distance = 2.5 − (l1 + l2).
     assert res.position_error == pytest.approx(0.7, abs=1e-3)
@@ -295,7 +306,9 @@ def test_position_mode_on_a_three_joint_arm(registry, robot_id: str) -> None:
         q_true = random_q(robot, rng)
         target = reference_pose(robot, q_true, robot.ee_frame)
         goal = pin.SE3(np.eye(3), target[:3, 3].copy())  # orientation ignored
-        res = ik.solve(robot, robot.ee_frame, goal, mode="position", timeout_ms=BUDGET_MS)
+        res = ik.solve(
+            robot, goal, IKOptions(frame=robot.ee_frame, mode="position", timeout_ms=BUDGET_MS)
+        )
         assert res.success
         T = reference_pose(robot, res.q, robot.ee_frame)
         assert np.linalg.norm(T[:3, 3] - target[:3, 3]) <= TOL
@@ -306,7 +319,7 @@ def test_orientation_mode(registry) -> None:
     robot = registry.get("ur5")
     target = reference_pose(robot, np.array([0.1, -0.8, 1.0, 0.3, -0.7, 2.0]), "tool0")
     goal = pin.SE3(target[:3, :3].copy(), np.array([9.0, 9.0, 9.0]))  # position ignored
-    res = ik.solve(robot, "tool0", goal, mode="orientation", timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, goal, IKOptions(frame="tool0", mode="orientation", timeout_ms=BUDGET_MS))
     assert res.success
     _, dr = pose_error(reference_pose(robot, res.q, "tool0"), target)
     assert dr <= TOL
@@ -319,7 +332,7 @@ def test_zero_weight_frees_a_component(registry) -> None:
     Rz = pin.rpy.rpyToMatrix(0.0, 0.0, 0.3)
     goal = pin.SE3(Rz @ target[:3, :3], target[:3, 3].copy())
     w = np.array([1, 1, 1, 1, 1, 0.0])
-    res = ik.solve(robot, "tool0", goal, weights=w, timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, goal, IKOptions(frame="tool0", weights=tuple(w), timeout_ms=BUDGET_MS))
     assert res.success
     T = reference_pose(robot, res.q, "tool0")
     assert np.linalg.norm(T[:3, 3] - target[:3, 3]) <= TOL
@@ -339,7 +352,7 @@ def test_continuous_joints_use_wire_angles(registry) -> None:
         q_true = random_q(robot, rng)
         q_true[cont] += 2 * np.pi  # the same pose with angles beyond π
         target = reference_pose(robot, q_true, frame)
-        res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS)
+        res = ik.solve(robot, se3(target), IKOptions(frame=frame, timeout_ms=BUDGET_MS))
         assert res.success
         assert res.q.shape == (robot.n,)
         assert np.all(np.abs(res.q[cont]) <= np.pi + 1e-12)
@@ -358,11 +371,15 @@ def test_accept_predicate_rejects_solutions(registry) -> None:
         calls.append(q.copy())
         return q[2] < 0.0  # elbow on the other side than q_true
 
-    res = ik.solve(robot, "tool0", target, seed=q_true, accept=accept, timeout_ms=2000)
+    res = ik.solve(
+        robot, target, IKOptions(frame="tool0", timeout_ms=2000), seed=q_true, accept=accept
+    )
     assert calls and res.success and res.q[2] < 0.0
     dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
     assert dp <= TOL and dr <= TOL
-    never = ik.solve(robot, "tool0", target, accept=lambda q: False, timeout_ms=10.0)
+    never = ik.solve(
+        robot, target, IKOptions(frame="tool0", timeout_ms=10.0), accept=lambda q: False
+    )
     assert not never.success and never.solutions == []
 
 
@@ -372,7 +389,9 @@ def test_redundant_arm_stays_near_the_seed(registry) -> None:
     q_true = robot.mid_range()
     q_true[:7] = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5]
     target = se3(reference_pose(robot, q_true, "panda_link8"))
-    res = ik.solve(robot, "panda_link8", target, seed=q_true + 0.02, timeout_ms=BUDGET_MS)
+    res = ik.solve(
+        robot, target, IKOptions(frame="panda_link8", timeout_ms=BUDGET_MS), seed=q_true + 0.02
+    )
     assert res.success and res.restarts == 0
     assert np.abs(res.q - q_true).max() < 0.1
 
@@ -383,7 +402,7 @@ def test_quaternion_target_matches_matrix(registry) -> None:
     quat /= np.linalg.norm(quat)
     R = quaternion_to_matrix(quat)
     target = pin.SE3(R, np.array([0.3, 0.2, 0.4]))
-    res = ik.solve(robot, "tool0", target, timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, target, IKOptions(frame="tool0", timeout_ms=BUDGET_MS))
     assert res.success
     dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
     assert dp <= TOL and dr <= TOL
@@ -397,21 +416,27 @@ def test_quaternion_target_matches_matrix(registry) -> None:
         ({"timeout_ms": -1.0}, "timeout_ms"),
         ({"max_iterations": 0}, "max_iterations"),
         ({"tolerance": (0.0, 1e-5)}, "tolerance"),
-        ({"weights": np.array([1, 1, 1, 1, 1, -1.0])}, "weights"),
-        ({"weights": np.zeros(6)}, "weights"),
-        ({"seed": np.zeros(3)}, "seed"),
+        ({"weights": (1, 1, 1, 1, 1, -1.0)}, "weights"),
+        ({"weights": (0.0,) * 6}, "weights"),
     ],
 )
-def test_bad_arguments(registry, kwargs: dict, field: str) -> None:
-    robot = registry.get("ur5")
+def test_bad_options(kwargs: dict, field: str) -> None:
     with pytest.raises(InvalidInputError) as err:
-        ik.solve(robot, "tool0", pin.SE3.Identity(), **kwargs)
+        IKOptions(frame="tool0", **kwargs)
     assert err.value.field == field
+
+
+def test_bad_seed(registry) -> None:
+    with pytest.raises(InvalidInputError) as err:
+        ik.solve(
+            registry.get("ur5"), pin.SE3.Identity(), IKOptions(frame="tool0"), seed=np.zeros(3)
+        )
+    assert err.value.field == "seed"
 
 
 def test_unknown_frame(registry) -> None:
     with pytest.raises(UnknownNameError):
-        ik.solve(registry.get("ur5"), "tool9", pin.SE3.Identity())
+        ik.solve(registry.get("ur5"), pin.SE3.Identity(), IKOptions(frame="tool9"))
 
 
 def test_error_jacobian_and_step_equivalence(registry) -> None:
