@@ -21,8 +21,8 @@ from app.kinematics import ik
 from app.kinematics.analytic_ik import into_limits, planar2_geometry, planar2_solutions
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.ik.precompute import ik_chain
-from app.kinematics.ik.problem import IKOptions
-from app.kinematics.ik.search import DISTINCT
+from app.kinematics.ik.problem import IKOptions, IKProblem
+from app.kinematics.ik.search import DISTINCT, Search
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
 
@@ -383,17 +383,105 @@ def test_accept_predicate_rejects_solutions(registry) -> None:
     assert not never.success and never.solutions == []
 
 
-def test_redundant_arm_stays_near_the_seed(registry) -> None:
-    """Panda from a seed next to a solution: the answer stays in that neighbourhood."""
+PANDA_Q = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5, 0.03]
+
+
+def panda_two_solutions(robot: RobotModel) -> tuple[np.ndarray, np.ndarray, pin.SE3]:
+    """Two configurations 0.5 rad apart (elbow swung about the shoulder–wrist line, other
+    finger opening) that both place panda_link8 at one pose, checked by yourdfpy."""
+    q_a = np.array(PANDA_Q)
+    T = reference_pose(robot, q_a, "panda_link8")
+    start = q_a + [0.6, 0.0, -0.6, 0.0, 0.0, 0.0, 0.0, -0.02]
+    options = IKOptions(frame="panda_link8", tolerance=(1e-10, 1e-10), timeout_ms=BUDGET_MS)
+    q_b = ik.solve(robot, se3(T), options, seed=start).q
+    dp, dr = pose_error(reference_pose(robot, q_b, "panda_link8"), T)
+    assert dp <= 1e-9 and dr <= 1e-9 and within_limits(robot, q_b)
+    assert np.abs(q_b - q_a).max() > 0.5
+    return q_a, q_b, se3(T)
+
+
+@pytest.mark.parametrize("mode", ["pose", "position"])  # compiled and Python loops
+def test_a_seed_that_solves_the_target_is_the_answer(registry, mode: str) -> None:
+    """Each of two different solutions, given as the seed, comes back unchanged after one
+    evaluation (the finger, which does not move the frame, keeps its seed value too)."""
     robot = registry.get("panda")
-    q_true = robot.mid_range()
-    q_true[:7] = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5]
-    target = se3(reference_pose(robot, q_true, "panda_link8"))
-    res = ik.solve(
-        robot, target, IKOptions(frame="panda_link8", timeout_ms=BUDGET_MS), seed=q_true + 0.02
-    )
-    assert res.success and res.restarts == 0
-    assert np.abs(res.q - q_true).max() < 0.1
+    options = IKOptions(frame="panda_link8", mode=mode, timeout_ms=BUDGET_MS)
+    q_a, q_b, target = panda_two_solutions(robot)
+    for q in (q_a, q_b):
+        res = ik.solve(robot, target, options, seed=q)
+        assert res.success and res.iterations <= 1 and res.restarts == 0
+        np.testing.assert_array_equal(res.q, q)
+
+
+def test_redundant_arm_answers_near_its_own_seed(registry) -> None:
+    """Seeds near two different solutions of one pose: each answer stays by its own seed."""
+    robot = registry.get("panda")
+    q_a, q_b, target = panda_two_solutions(robot)
+    options = IKOptions(frame="panda_link8", timeout_ms=BUDGET_MS)
+    nudge = np.array([0.03, -0.02, 0.03, 0.02, -0.03, 0.02, 0.03, 0.0])
+    for q in (q_a, q_b):
+        res = ik.solve(robot, target, options, seed=q + nudge)
+        assert res.success and res.restarts == 0
+        assert np.abs(res.q - q).max() < 0.1
+
+
+def test_closed_form_branch_nearest_the_seed_comes_first(registry) -> None:
+    """UR5: every closed-form branch, given as the seed, is the answer."""
+    robot = registry.get("ur5")
+    target = reference_pose(robot, np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3]), "tool0")
+    branches = ik.solve(robot, se3(target), IKOptions(frame="tool0", num_solutions=8)).solutions
+    assert len(branches) == 8
+    for b in branches:
+        res = ik.solve(robot, se3(target), IKOptions(frame="tool0"), seed=b.q)
+        assert res.method == "analytic"
+        np.testing.assert_allclose(res.q, b.q, atol=1e-12)
+        dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target)
+        assert dp <= TOL and dr <= TOL
+
+
+@pytest.mark.parametrize(
+    ("weights", "axis", "accepted"),
+    [
+        (None, (1.0, 0.0, 0.0), False),
+        (None, (0.0, 0.0, 1.0), False),
+        ((1, 1, 1, 1, 1, 0), (1.0, 0.0, 0.0), False),
+        ((1, 1, 1, 1, 1, 0), (0.0, 0.0, 1.0), True),  # the error lies on a freed component
+    ],
+)
+def test_offer_refuses_a_candidate_outside_the_orientation_tolerance(
+    registry, weights, axis, accepted: bool
+) -> None:
+    """A candidate at the target position but 0.01 rad off in orientation (world axis
+    ``axis``) is not a solution unless that rotation component is freed."""
+    robot = registry.get("ur5")
+    q = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    T = reference_pose(robot, q, "tool0")
+    # R R_tᵀ = exp(0.01·axis): the frame is rotated 0.01 rad about ``axis`` (world) from it.
+    target = pin.SE3(pin.exp3(-0.01 * np.array(axis)) @ T[:3, :3], T[:3, 3].copy())
+    options = IKOptions(frame="tool0", weights=weights)
+    ch = ik_chain(robot, "tool0")
+    search = Search(IKProblem(robot, ch, target, q, options, options.task()))
+    dp, dr = pose_error(T, target.homogeneous)
+    assert dp <= 1e-12 and dr == pytest.approx(0.01)  # meets position, not orientation
+    assert search.offer(q[ch.active]) is accepted
+    assert len(search.solutions) == accepted
+
+
+@pytest.mark.parametrize(("mode", "accepted"), [("pose", False), ("orientation", True)])
+def test_offer_refuses_a_candidate_outside_the_position_tolerance(
+    registry, mode: str, accepted: bool
+) -> None:
+    """A candidate at the target orientation but 1 mm away is a solution only when the
+    position is free."""
+    robot = registry.get("ur5")
+    q = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    T = reference_pose(robot, q, "tool0")
+    target = pin.SE3(T[:3, :3].copy(), T[:3, 3] + [0.0, 1e-3, 0.0])
+    options = IKOptions(frame="tool0", mode=mode)
+    ch = ik_chain(robot, "tool0")
+    search = Search(IKProblem(robot, ch, target, q, options, options.task()))
+    assert search.offer(q[ch.active]) is accepted
+    assert len(search.solutions) == accepted
 
 
 def test_quaternion_target_matches_matrix(registry) -> None:
