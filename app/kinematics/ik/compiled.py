@@ -9,13 +9,11 @@ offering converged iterates to the search), so both loops take the same iterates
 
 from __future__ import annotations
 
-import time
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from app.kinematics import analytic_ik, ik_kernel
-from app.kinematics.errors import Cancelled
 from app.kinematics.ik.dls import (
     ATTEMPT_CAP,
     CLAMP,
@@ -27,7 +25,6 @@ from app.kinematics.ik.dls import (
     NULL_FLOOR,
     NULL_GAIN,
     STALL,
-    never_cancelled,
 )
 
 if TYPE_CHECKING:
@@ -77,8 +74,6 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     best = np.array([s.best_energy])
     best_q = q_ref.copy()
     have_best = False
-    perf = time.perf_counter
-    cancelled = s.cancel.is_set if s.cancel is not None else never_cancelled
     attempt = ik_kernel.attempt
     args = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, lo, hi, ch.cont_mask, Rt, pt, q_ref)
     qa = q_ref.copy()
@@ -95,13 +90,8 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
                         best[0], best_q[:], have_best = ep2 + er2, qa, True
                     qa = np.array(s.restart())
         while True:
-            if it >= cap:
+            if s.out_of_budget(it, cap, deadline):
                 return
-            if perf() >= deadline:
-                s.timed_out = True
-                return
-            if cancelled():
-                raise Cancelled()
             before = best[0]
             outcome, n = attempt(
                 qa, *args,

@@ -22,14 +22,11 @@ so both loops take the same iterates.
 from __future__ import annotations
 
 import math
-import time
 from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
 from scipy.linalg.lapack import dposv as _posv
-
-from app.kinematics.errors import Cancelled
 
 if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
@@ -66,11 +63,6 @@ def _frame_jacobian_6xn(
 ) -> np.ndarray:
     """``pin.getFrameJacobian`` as a (6, nv) array whatever nv (Pinocchio returns (6,) for 1)."""
     return pin.getFrameJacobian(model, data, fid, rf).reshape(6, -1)
-
-
-def never_cancelled() -> bool:
-    """The ``cancel.is_set`` of a search nobody can cancel."""
-    return False
 
 
 class _Loop:
@@ -211,12 +203,10 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
     deadline (``time.perf_counter``) passes or ``max_iterations`` are spent.
 
     Updates ``s`` in place: its solutions (via :meth:`Search.offer`), iteration and restart
-    counts, best iterate and ``timed_out``; raises :class:`Cancelled` once ``s.cancel`` is set.
+    counts, best iterate and ``timed_out``; raises ``Cancelled`` once ``s.cancel`` is set.
     """
     loop = _Loop(s)
     cap = max_iterations if max_iterations is not None else 1 << 62
-    perf = time.perf_counter
-    cancelled = s.cancel.is_set if s.cancel is not None else never_cancelled
     qa = loop.q_ref.copy()
     attempt_iters = 0
     best_attempt = math.inf
@@ -225,13 +215,8 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
     best_energy, best_qa = s.best_energy, None
     try:
         while True:
-            if it >= cap:
+            if s.out_of_budget(it, cap, deadline):
                 return
-            if perf() >= deadline:
-                s.timed_out = True
-                return
-            if cancelled():
-                raise Cancelled()
             conv, energy, ep2, Re, et = loop.evaluate(qa)
             it += 1
             attempt_iters += 1

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pinocchio as pin
 
-from app.kinematics.errors import InvalidInputError
+from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
 from app.kinematics.models import RobotModel
@@ -196,6 +196,19 @@ class Search:
         if self.sw is not None:
             v = v * self.sw
         return float(v @ v)
+
+    def out_of_budget(self, iterations: int, cap: int, deadline: float) -> bool:
+        """Whether the loop must stop before another iteration (attempt, compiled): the
+        iteration cap is reached, or the deadline (``time.perf_counter``) has passed (then
+        ``timed_out`` is set). Raises :class:`Cancelled` once ``cancel`` is set."""
+        if iterations >= cap:
+            return True
+        if time.perf_counter() >= deadline:
+            self.timed_out = True
+            return True
+        if self.cancel is not None and self.cancel.is_set():
+            raise Cancelled()
+        return False
 
     # --------------------------------------------------------------------- restarts
     def seed_is_far(self, ep2: float, trace: float) -> bool:
