@@ -125,6 +125,28 @@ def test_both_loops_solve_and_agree_with_yourdfpy(registry, robot_id: str) -> No
             assert dp <= TOL and dr <= TOL
 
 
+@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("puma560", None)])
+def test_compiled_and_python_loops_take_the_same_iterates(registry, robot_id, frame) -> None:
+    """The compiled driver repeats the Python loop step for step: from the same seeds, the
+    same iteration and restart counts and the same answers (to rounding), reachable or not."""
+    compiled = registry.get(robot_id)
+    python = RobotModel(compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
+                        srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame)  # fmt: skip
+    frame = frame or compiled.ee_frame
+    ik_chain(python, frame).compiled = None
+    options = IKOptions(frame=frame, timeout_ms=60_000, max_iterations=150, analytic=False)
+    rng = np.random.default_rng(8)
+    for k in range(12):
+        target = se3(reference_pose(compiled, random_q(compiled, rng), frame))
+        if k % 4 == 3:  # out of reach: the cap ends both searches
+            target.translation = target.translation * 3.0
+        seed = random_q(compiled, rng)
+        a = ik.solve(compiled, target, options, seed=seed)
+        b = ik.solve(python, target, options, seed=seed)
+        assert (a.success, a.iterations, a.restarts) == (b.success, b.iterations, b.restarts)
+        np.testing.assert_allclose(a.q, b.q, rtol=0, atol=1e-8)
+
+
 def test_iteration_cap_and_best_effort_on_the_compiled_loop(registry) -> None:
     """An unreachable target: the cap ends the search, the best iterate is reported with
     its true error (Pinocchio FK), inside the limits."""

@@ -56,6 +56,8 @@ CLAMP = True
 NEAREST_FIRST = True
 
 _EYES = [np.eye(i) for i in range(7)]
+# The hot loop's Pinocchio calls, looked up once.
+_jacobians, _placement, _log3 = pin.computeJointJacobians, pin.updateFramePlacement, pin.log3
 
 
 def _frame_jacobian_6xn(
@@ -67,6 +69,13 @@ def _frame_jacobian_6xn(
 
 class _Loop:
     """The constants of one run (index sets, target, task) and the two heavy steps."""
+
+    __slots__ = (
+        "search", "model", "data", "fid", "lo", "hi", "RtT", "pt", "rows", "sw", "full_pose",
+        "eye", "q_ref", "tol_p2", "tol_r2", "check_pos", "check_rot", "rows_p", "rows_r",
+        "all_plain", "plain", "plain_q", "has_cont", "cont", "cont_q", "cont_q1", "gfj",
+        "clamp", "redundant", "cols", "qp", "e", "ev", "ew", "L", "use_jlog",
+    )  # fmt: skip
 
     def __init__(self, s: Search) -> None:
         robot, ch = s.robot, s.ch
@@ -100,6 +109,7 @@ class _Loop:
         self.cols = ch.cols_sel
         self.qp = robot.to_pin(s.q_seed)
         self.e = np.empty(6)
+        self.ev, self.ew = self.e[:3], self.e[3:]  # views: e_p, e_R
         self.L = np.eye(6)  # blockdiag(I, Jlog3(R_e)ᵀ): J_e = L · J_LWA (active columns)
         # With all three rotation rows in the task, J·dq = −e gives the exact Gauss–Newton
         # step (see the module docstring of ik: Jlog3ᵀ·φ = φ); a strict subset of them needs
@@ -112,7 +122,7 @@ class _Loop:
         Returns whether the checked components are within the tolerances, the task energy
         ‖e_task‖² (weighted), ‖e_p‖², R_e = R R_tᵀ and the task error e_task.
         """
-        qp, e = self.qp, self.e
+        qp, e, model, data = self.qp, self.e, self.model, self.data
         if self.all_plain:
             qp[self.plain_q] = qa
         else:
@@ -120,13 +130,13 @@ class _Loop:
             th = qa[self.cont]
             qp[self.cont_q] = np.cos(th)
             qp[self.cont_q1] = np.sin(th)
-        pin.computeJointJacobians(self.model, self.data, qp)
-        T = pin.updateFramePlacement(self.model, self.data, self.fid)
+        _jacobians(model, data, qp)
+        T = _placement(model, data, self.fid)
         # e = [p − p_t; log3(R R_tᵀ)] in world axes
         Re = T.rotation @ self.RtT
-        ev = e[:3]
+        ev = self.ev
         np.subtract(T.translation, self.pt, out=ev)
-        e[3:] = pin.log3(Re)
+        self.ew[:] = _log3(Re)
         energy = e @ e
         ep2 = ev @ ev
         if self.full_pose:
