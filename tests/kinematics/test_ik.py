@@ -225,6 +225,23 @@ def test_planar2_returns_both_elbow_solutions(registry, x: float, y: float) -> N
     assert res.method == "analytic"
 
 
+@pytest.mark.parametrize(("x", "y"), [(1.2, 0.7), (-0.4, 1.1)])
+def test_numeric_search_reports_each_solution_once(registry, x: float, y: float) -> None:
+    """The 2-link arm has exactly two solutions: the numeric search (restarts converging to
+    them again and again) asked for three reports those two, each once."""
+    robot = registry.get("planar2")
+    target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
+    options = IKOptions(
+        frame=robot.ee_frame, mode="position", num_solutions=3, analytic=False,
+        tolerance=(1e-9, 1e-9), timeout_ms=60_000, max_iterations=400,
+    )  # fmt: skip
+    res = ik.solve(robot, target, options)
+    assert res.success and res.status == "converged" and res.method == "numeric"
+    assert len(res.solutions) == 2
+    got = {(round(s.q[0], 6), round(s.q[1], 6)) for s in res.solutions}
+    assert got == {(round(a, 6), round(b, 6)) for a, b in _planar_closed_form(1.0, 0.8, x, y)}
+
+
 def _tilted_planar_urdf() -> str:
     """A planar 2-link arm whose axes are world y, lifted and offset, with a tool offset."""
     return """<?xml version="1.0"?>
