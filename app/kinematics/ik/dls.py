@@ -56,8 +56,11 @@ CLAMP = True
 NEAREST_FIRST = True
 
 _EYES = [np.eye(i) for i in range(7)]
-# The hot loop's Pinocchio calls, looked up once.
+# The hot loop's library calls, looked up once.
 _jacobians, _placement, _log3 = pin.computeJointJacobians, pin.updateFramePlacement, pin.log3
+_LWA = pin.LOCAL_WORLD_ALIGNED
+_inner, _dot, _minimum, _maximum = np.inner, np.dot, np.minimum, np.maximum
+_MAX_STEP2 = MAX_STEP * MAX_STEP
 
 
 def _frame_jacobian_6xn(
@@ -73,7 +76,7 @@ class _Loop:
     __slots__ = (
         "search", "model", "data", "fid", "lo", "hi", "RtT", "pt", "rows", "sw", "full_pose",
         "eye", "q_ref", "tol_p2", "tol_r2", "check_pos", "check_rot", "rows_p", "rows_r",
-        "all_plain", "plain", "plain_q", "has_cont", "cont", "cont_q", "cont_q1", "gfj",
+        "all_plain", "plain", "plain_q", "cont", "cont_q", "cont_q1", "gfj",
         "clamp", "redundant", "cols", "qp", "e", "ev", "ew", "L", "use_jlog",
     )  # fmt: skip
 
@@ -98,8 +101,9 @@ class _Loop:
         self.all_plain = ch.plain.size == ch.k
         self.plain = ch.plain
         self.plain_q = ch.plain_q_sel if self.all_plain else ch.plain_q
-        self.has_cont = ch.has_continuous
-        self.cont, self.cont_q, self.cont_q1 = ch.cont, ch.cont_q, ch.cont_q1
+        self.cont_q, self.cont_q1 = ch.cont_q, ch.cont_q1
+        # Positions of the continuous joints in the active set (None: there are none).
+        self.cont = ch.cont if ch.has_continuous else None
         # Pinocchio hands back a 1-D array (6,) for a model with one degree of freedom (a
         # 1-DoF arm, or one joint and its mimic followers): keep it a 6×1 matrix.
         self.gfj = _frame_jacobian_6xn if self.model.nv == 1 else pin.getFrameJacobian
@@ -127,7 +131,7 @@ class _Loop:
             qp[self.plain_q] = qa
         else:
             qp[self.plain_q] = qa[self.plain]
-            th = qa[self.cont]
+            th = qa[self.cont]  # not all plain: some joints are continuous
             qp[self.cont_q] = np.cos(th)
             qp[self.cont_q1] = np.sin(th)
         _jacobians(model, data, qp)
@@ -160,9 +164,9 @@ class _Loop:
         model, data, fid = self.model, self.data, self.fid
         if self.use_jlog:
             self.L[3:, 3:] = pin.Jlog3(Re).T
-            Je = self.L @ self.gfj(model, data, fid, pin.LOCAL_WORLD_ALIGNED)[:, self.cols]
+            Je = self.L @ self.gfj(model, data, fid, _LWA)[:, self.cols]
         else:
-            Je = self.gfj(model, data, fid, pin.LOCAL_WORLD_ALIGNED)[:, self.cols]
+            Je = self.gfj(model, data, fid, _LWA)[:, self.cols]
         if self.full_pose:
             Jt = Je
         else:
@@ -171,41 +175,41 @@ class _Loop:
                 Jt = Jt * self.sw[:, None]
         eye = self.eye
         lam2 = DAMP * energy + MU
-        A = np.inner(Jt, Jt)  # J Jᵀ
+        A = _inner(Jt, Jt)  # J Jᵀ
         A += lam2 * eye
         # nd = −Δq (the sign folded into the update below)
         if self.redundant and energy > NULL_FLOOR and not self.search.restarts:
             # Preference gain fades with the error (quadratic convergence kept).
             z = (self.q_ref - qa) * (NULL_GAIN * min(1.0, energy * (1.0 / NULL_ENERGY)))
-            nd = _posv(A, et + np.dot(Jt, z))[1] @ Jt - z
+            nd = _posv(A, et + _dot(Jt, z))[1] @ Jt - z
         else:
             nd = _posv(A, et)[1] @ Jt
         lo, hi = self.lo, self.hi
-        q_new = self._move(qa, nd)
-        q_next = np.minimum(np.maximum(q_new, lo), hi)
+        q_new = _move(qa, nd, self.cont)
+        q_next = _minimum(_maximum(q_new, lo), hi)
         if self.clamp and (q_next != q_new).any():
             # Joints already at a limit and pushed further are locked for this step (their
             # columns removed) so the other joints take over their share.
             locked = ((q_new < lo) & (qa <= lo)) | ((q_new > hi) & (qa >= hi))
             if locked.any() and not locked.all():
                 Jl = Jt * ~locked
-                A = np.inner(Jl, Jl)
+                A = _inner(Jl, Jl)
                 A += lam2 * eye
-                q_new = self._move(qa, _posv(A, et)[1] @ Jl)
-                q_next = np.minimum(np.maximum(q_new, lo), hi)
+                q_new = _move(qa, _posv(A, et)[1] @ Jl, self.cont)
+                q_next = _minimum(_maximum(q_new, lo), hi)
         return q_next
 
-    def _move(self, qa: np.ndarray, nd: np.ndarray) -> np.ndarray:
-        """qa − nd with the step length capped at :data:`MAX_STEP`, continuous joints wrapped
-        to [−π, π) (not yet clipped)."""
-        n2 = nd @ nd
-        if n2 > MAX_STEP * MAX_STEP:
-            nd *= MAX_STEP / math.sqrt(n2)
-        q_new = qa - nd
-        if self.has_cont:
-            cont = self.cont
-            q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
-        return q_new
+
+def _move(qa: np.ndarray, nd: np.ndarray, cont: np.ndarray | None) -> np.ndarray:
+    """qa − nd with the step length capped at :data:`MAX_STEP`, the continuous joints (at
+    positions ``cont``, None: none) wrapped to [−π, π); not yet clipped to the limits."""
+    n2 = nd @ nd
+    if n2 > _MAX_STEP2:
+        nd *= MAX_STEP / math.sqrt(n2)
+    q_new = qa - nd
+    if cont is not None:
+        q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
+    return q_new
 
 
 def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
@@ -223,11 +227,12 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
     stall = 0
     it = s.iterations
     best_energy, best_qa = s.best_energy, None
+    out_of_budget, evaluate, step = s.out_of_budget, loop.evaluate, loop.step
     try:
         while True:
-            if s.out_of_budget(it, cap, deadline):
+            if out_of_budget(it, cap, deadline):
                 return
-            conv, energy, ep2, Re, et = loop.evaluate(qa)
+            conv, energy, ep2, Re, et = evaluate(qa)
             it += 1
             attempt_iters += 1
             if conv:
@@ -255,7 +260,7 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
                     qa = s.restart()
                     attempt_iters, best_attempt, stall = 0, math.inf, 0
                     continue
-            qa = loop.step(qa, Re, et, energy)
+            qa = step(qa, Re, et, energy)
     finally:
         s.iterations = it
         if best_qa is not None and best_energy < s.best_energy:
