@@ -104,15 +104,15 @@ def warm_up(require_cache: bool) -> int:
     import os
     import time
 
-    from app.kinematics import ik
+    from app.kinematics.ik import compiled
 
     start = time.perf_counter()
-    ik.warm_up()
-    stats = ik.kernel_cache_stats()
+    compiled.warm_up()
+    stats = compiled.kernel_cache_stats()
     report = {
         **stats,
         "seconds": round(time.perf_counter() - start, 3),
-        "module": ik.__file__,
+        "module": compiled.__file__,
         "numba_cache_dir": os.environ.get("NUMBA_CACHE_DIR"),
     }
     print(json.dumps(report))

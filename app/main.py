@@ -28,7 +28,8 @@ from app import api, openapi
 from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
 from app.guard import ErrorGuardMiddleware
-from app.kinematics import ik, procwatch
+from app.kinematics import procwatch
+from app.kinematics.ik.compiled import warm_up as warm_up_ik
 from app.kinematics.xmldoc import XmlLimits
 from app.logs import configure_logging
 from app.methods import MethodsMiddleware
@@ -75,7 +76,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         },
     )
     # Compile the IK kernels in the background: the first IK request does not wait for it.
-    threading.Thread(target=ik.warm_up, name="ik-warm-up", daemon=True).start()
+    threading.Thread(target=warm_up_ik, name="ik-warm-up", daemon=True).start()
     procwatch.exit_with_supervisor(settings.graceful_timeout_s + 5)  # no worker outlives it
     yield
     log.info("denavit stopped")

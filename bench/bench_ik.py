@@ -33,6 +33,8 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics import ik
+from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik.problem import IKOptions
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion
 from app.registry import Registry
@@ -59,7 +61,7 @@ def _chains(reg: Registry) -> list[tuple[str, str]]:
 
 def targets(robot: RobotModel, frame: str, n: int, seed: int = 2015) -> list[pin.SE3]:
     """FK poses of n configurations uniform within the limits of the frame's joints."""
-    ch = ik.chain(robot, frame)
+    ch = ik_chain(robot, frame)
     rng = np.random.default_rng(seed)
     q = np.tile(robot.mid_range(), (n, 1))
     q[:, ch.active] = rng.uniform(ch.sample_lo, ch.sample_hi, (n, ch.k))
@@ -92,7 +94,7 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
     for rid, frame in _chains(reg):
         robot = reg.get(rid)
         goals = targets(robot, frame, n)
-        ik.solve(robot, frame, goals[0])  # warm-up: chain and closed-form set-up
+        ik.solve(robot, goals[0], IKOptions(frame=frame))  # warm-up: chain and closed-form set-up
         wall = np.empty(n)
         cpu = np.empty(n)
         its = np.empty(n)
@@ -102,7 +104,7 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
         for i, T in enumerate(goals):
             c0 = thread_time()
             t0 = perf()
-            res = ik.solve(robot, frame, T, timeout_ms=BUDGET_MS)
+            res = ik.solve(robot, T, IKOptions(frame=frame, timeout_ms=BUDGET_MS))
             wall[i] = perf() - t0
             cpu[i] = thread_time() - c0
             its[i] = res.iterations
@@ -114,7 +116,7 @@ def in_process(reg: Registry, n: int) -> list[tuple]:
         ok_cpu = 0
         for T in goals:
             c0 = thread_time()
-            res = ik.solve(robot, frame, T, timeout_ms=20 * BUDGET_MS)
+            res = ik.solve(robot, T, IKOptions(frame=frame, timeout_ms=20 * BUDGET_MS))
             used = thread_time() - c0
             if res.success and used <= BUDGET_MS * 1e-3:
                 ok_cpu += _verify(robot, frame, res.q, T)
@@ -153,9 +155,9 @@ def loops_side_by_side(reg: Registry, n: int) -> list[tuple]:
             compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
             srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame,
         )  # fmt: skip
-        if ik.chain(compiled, frame).compiled is None:
+        if ik_chain(compiled, frame).compiled is None:
             continue
-        ik.chain(python, frame).compiled = None
+        ik_chain(python, frame).compiled = None
         goals = targets(compiled, frame, n, seed=11)
         cpu = {"compiled": np.empty(n), "python": np.empty(n)}
         ok = {"compiled": 0, "python": 0}
@@ -163,7 +165,9 @@ def loops_side_by_side(reg: Registry, n: int) -> list[tuple]:
         for i, T in enumerate(goals):
             for name, robot in (("compiled", compiled), ("python", python)):
                 c0 = time.thread_time()
-                res = ik.solve(robot, frame, T, timeout_ms=20 * BUDGET_MS, analytic=False)
+                res = ik.solve(
+                    robot, T, IKOptions(frame=frame, timeout_ms=20 * BUDGET_MS, analytic=False)
+                )
                 cpu[name][i] = time.thread_time() - c0
                 ok[name] += res.success and cpu[name][i] <= BUDGET_MS * 1e-3
                 its[name] += res.iterations

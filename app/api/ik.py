@@ -20,13 +20,9 @@ from app.api.schemas import Finite, Matrix4, Position3, Quat, RobotId, Schema
 from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import (
-    MAX_POSITION,
-    RobotModel,
-    check_bounded,
-    check_joint_value,
-)
-from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
+from app.kinematics.ik.problem import IKOptions, frame_name, seed_configuration, target_placement
+from app.kinematics.models import RobotModel
+from app.kinematics.obstacles import Obstacle
 from app.metrics import record_ik
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
@@ -34,8 +30,6 @@ router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
 
-#: Largest deviation of RᵀR from I (and of the bottom row from [0 0 0 1]) accepted in a matrix.
-MATRIX_TOL = 1e-6
 #: IK requests with a budget up to this run on the event loop (no thread hop).
 INLINE_BUDGET_MS = 5.0
 
@@ -64,8 +58,8 @@ class Tolerance(Schema):
     orientation: Positive = Field(1e-5, description="Largest rotation angle to the target (rad).")
 
 
-class IKOptions(Schema):
-    """Options shared by single and batch IK."""
+class IKOptionsIn(Schema):
+    """Options shared by single and batch IK (the wire shape of :class:`IKOptions`)."""
 
     frame: str | None = Field(None, description="Frame to place; default the end effector.")
     mode: Literal["pose", "position", "orientation"] = Field("pose", description=MODE_DOC)
@@ -109,7 +103,7 @@ class IKOptions(Schema):
     )
 
 
-class IKRequest(IKOptions):
+class IKRequest(IKOptionsIn):
     """One IK query."""
 
     target: Target
@@ -146,7 +140,7 @@ class IKResponse(BaseModel):
     method: str = Field(description="analytic | numeric | analytic+numeric")
 
 
-class IKBatchRequest(IKOptions):
+class IKBatchRequest(IKOptionsIn):
     """Many targets for one frame."""
 
     targets: list[Target] = Field(min_length=1, description="Targets, solved in order.")
@@ -183,47 +177,9 @@ class IKBatchResponse(BaseModel):
 
 
 # ----------------------------------------------------------------------------- parsing
-def target_placement(target: Target, mode: str, field: str = "target") -> pin.SE3:
-    """The target as a Pinocchio SE3, validated; components a mode ignores may be omitted."""
-    if target.matrix is not None:
-        if target.position is not None or target.orientation is not None:
-            raise InvalidInputError("give either matrix or position/orientation", field)
-        M = np.array(target.matrix, dtype=float)
-        if np.abs(M[3] - np.array([0.0, 0.0, 0.0, 1.0])).max() > MATRIX_TOL:
-            raise InvalidInputError("the last row must be [0, 0, 0, 1]", f"{field}.matrix")
-        R = M[:3, :3]
-        if np.abs(R.T @ R - np.eye(3)).max() > MATRIX_TOL or np.linalg.det(R) <= 0.0:
-            raise InvalidInputError(
-                "the rotation part must be orthonormal with determinant +1", f"{field}.matrix"
-            )
-        for i in range(3):  # the translation column: target.matrix.<row>.3
-            check_bounded(M[i, 3], f"{field}.matrix.{i}.3", MAX_POSITION, "m")
-        U, _, Vt = np.linalg.svd(R)  # nearest rotation (removes rounding)
-        return pin.SE3(U @ Vt, M[:3, 3].copy())
-    p = np.zeros(3)
-    R = np.eye(3)
-    if target.position is not None:
-        p = np.array(target.position, dtype=float)  # bounded by Position3
-    elif mode != "orientation":
-        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
-    if target.orientation is not None:
-        R = quaternion_to_matrix(unit_quaternion(target.orientation, f"{field}.orientation"))
-    elif mode != "position":
-        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.orientation")
-    return pin.SE3(R, p)
-
-
-def seed_configuration(robot: RobotModel, seed: Any) -> np.ndarray:
-    """Wire seed from a list or a joint → value map (default: middle of the limits)."""
-    if seed is None:
-        return robot.mid_range()
-    if isinstance(seed, dict):
-        out = robot.mid_range()
-        for name, value in seed.items():
-            idx = robot.joint_index(name, field=f"seed.{name}")
-            out[idx] = check_joint_value(value, f"seed.{name}")
-        return out
-    return robot.configuration(seed, field="seed")
+def _target(target: Target, mode: str, field: str = "target") -> pin.SE3:
+    """The target's placement (validated by the core, naming ``field``)."""
+    return target_placement(target.position, target.orientation, target.matrix, mode, field)
 
 
 def _budget(request: Request, timeout_ms: float) -> None:
@@ -234,7 +190,12 @@ def _budget(request: Request, timeout_ms: float) -> None:
         )
 
 
-def _collisions(request: Request, body: IKOptions) -> tuple | None:
+#: What collision-aware IK checks a solution against: obstacles (root frame), clearance (m),
+#: and the collision geometry (``mesh`` or ``convex``).
+Collisions = tuple[tuple[Obstacle, ...], float, str]
+
+
+def _collisions(request: Request, body: IKOptionsIn) -> Collisions | None:
     """(obstacles, margin, geometry) for collision-aware IK, or None (validated here)."""
     if not body.avoid_collisions:
         for name in ("obstacles", "scene"):
@@ -245,29 +206,25 @@ def _collisions(request: Request, body: IKOptions) -> tuple | None:
     return obstacles, body.margin, body.collision_geometry
 
 
-def _accept(robot: RobotModel, opts: dict) -> Any:
+def _accept(robot: RobotModel, collisions: Collisions | None) -> Any:
     """The collision-free predicate of collision-aware IK (builds the collision model)."""
-    if opts.get("collisions") is None:
+    if collisions is None:
         return None
-    obstacles, margin, geometry = opts["collisions"]
+    obstacles, margin, geometry = collisions
     return collision_filter(robot, obstacles, margin=margin, mode=geometry)
 
 
-def _options(robot: RobotModel, body: IKOptions) -> dict[str, Any]:
-    frame = body.frame or robot.ee_frame
-    robot.frame_id(frame)
-    if body.weights is not None:
-        rows = ik.MODE_ROWS[body.mode]
-        if not any(body.weights[i] > 0.0 for i in rows):
-            raise InvalidInputError(f"every weight of mode {body.mode!r} is zero", "weights")
-    return {
-        "frame": frame,
-        "mode": body.mode,
-        "weights": None if body.weights is None else np.array(body.weights),
-        "tolerance": (body.tolerance.position, body.tolerance.orientation),
-        "timeout_ms": body.timeout_ms,
-        "max_iterations": body.max_iterations,
-    }
+def _options(robot: RobotModel, body: IKOptionsIn, num_solutions: int = 1) -> IKOptions:
+    """The core's options from the request body (validated there)."""
+    return IKOptions(
+        frame=frame_name(robot, body.frame),
+        mode=body.mode,
+        weights=None if body.weights is None else tuple(body.weights),
+        tolerance=(body.tolerance.position, body.tolerance.orientation),
+        timeout_ms=body.timeout_ms,
+        max_iterations=body.max_iterations,
+        num_solutions=num_solutions,
+    )
 
 
 def _named(robot: RobotModel, q: np.ndarray) -> dict[str, float]:
@@ -278,30 +235,18 @@ def _solve_one(
     robot: RobotModel,
     target: pin.SE3,
     seed: np.ndarray,
-    opts: dict,
-    n: int,
+    options: IKOptions,
+    collisions: Collisions | None,
     cancel: threading.Event | None = None,
 ) -> dict:
-    frame = opts["frame"]
     res = ik.solve(
-        robot,
-        frame,
-        target,
-        mode=opts["mode"],
-        weights=opts["weights"],
-        seed=seed,
-        tolerance=opts["tolerance"],
-        timeout_ms=opts["timeout_ms"],
-        max_iterations=opts["max_iterations"],
-        num_solutions=n,
-        accept=_accept(robot, opts),
-        cancel=cancel,
+        robot, target, options, seed=seed, accept=_accept(robot, collisions), cancel=cancel
     )
     record_ik(res.success)
     return {
         "robot_id": robot.id,
-        "frame": frame,
-        "mode": opts["mode"],
+        "frame": options.frame,
+        "mode": options.mode,
         "success": res.success,
         "status": res.status,
         "q": res.q.tolist(),
@@ -328,7 +273,8 @@ def _solve_batch(
     robot: RobotModel,
     targets: list[pin.SE3],
     seed: np.ndarray,
-    opts: dict,
+    options: IKOptions,
+    collisions: Collisions | None,
     chain: bool,
     cancel: threading.Event | None = None,
 ) -> dict:
@@ -338,21 +284,9 @@ def _solve_batch(
     results = []
     solved = 0
     current = seed
-    accept = _accept(robot, opts)
+    accept = _accept(robot, collisions)
     for T in targets:
-        res = ik.solve(
-            robot,
-            opts["frame"],
-            T,
-            mode=opts["mode"],
-            weights=opts["weights"],
-            seed=current,
-            tolerance=opts["tolerance"],
-            timeout_ms=opts["timeout_ms"],
-            max_iterations=opts["max_iterations"],
-            accept=accept,
-            cancel=cancel,
-        )
+        res = ik.solve(robot, T, options, seed=current, accept=accept, cancel=cancel)
         record_ik(res.success)
         solved += res.success
         if chain and res.success:
@@ -371,8 +305,8 @@ def _solve_batch(
         )
     return {
         "robot_id": robot.id,
-        "frame": opts["frame"],
-        "mode": opts["mode"],
+        "frame": options.frame,
+        "mode": options.mode,
         "joint_names": robot.joint_names,
         "solved": solved,
         "results": results,
@@ -403,15 +337,15 @@ async def solve_ik(
     """
     _budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
-    opts = _options(robot, body)
-    opts["collisions"] = _collisions(request, body)
-    target = target_placement(body.target, body.mode)
+    options = _options(robot, body, body.num_solutions)
+    collisions = _collisions(request, body)
+    target = _target(body.target, body.mode)
     seed = seed_configuration(robot, body.seed)
-    if body.timeout_ms <= INLINE_BUDGET_MS and opts["collisions"] is None:
-        out = _solve_one(robot, target, seed, opts, body.num_solutions)
+    if body.timeout_ms <= INLINE_BUDGET_MS and collisions is None:
+        out = _solve_one(robot, target, seed, options, None)
     else:
         out = await offload_cancellable(
-            request, _solve_one, robot, target, seed, opts, body.num_solutions
+            request, _solve_one, robot, target, seed, options, collisions
         )
     return ORJSONResponse(out)
 
@@ -452,13 +386,11 @@ async def solve_ik_batch(
             "targets",
         )
     robot = await load_robot(reg, robot_id)
-    opts = _options(robot, body)
-    opts["collisions"] = _collisions(request, body)
-    targets = [
-        target_placement(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)
-    ]
+    options = _options(robot, body)
+    collisions = _collisions(request, body)
+    targets = [_target(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)]
     seed = seed_configuration(robot, body.seed)
     out = await offload_cancellable(
-        request, _solve_batch, robot, targets, seed, opts, body.chain_seeds
+        request, _solve_batch, robot, targets, seed, options, collisions, body.chain_seeds
     )
     return ORJSONResponse(out)

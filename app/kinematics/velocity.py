@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.ik import MODE_ROWS
+from app.kinematics.ik.problem import MODE_ROWS
 from app.kinematics.jacobian import Reference, frame_jacobian
 from app.kinematics.models import RobotModel
 

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from app.api import ik as ik_api
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.rotations import matrix_to_quaternion
 from tests.helpers import problem
@@ -16,7 +17,12 @@ GOOD_TARGET = {"position": [0.3, 0.2, 0.4], "orientation": [0.0, 0.0, 0.0, 1.0]}
 
 
 def ur5_target(registry, q=Q_UR5) -> dict:
-    T = forward_kinematics(registry.get("ur5"), np.array(q), ["tool0"])["tool0"]
+    return fk_target(registry, q, "ur5", "tool0")
+
+
+def fk_target(registry, q, robot_id: str, frame: str) -> dict:
+    """The wire target of ``frame`` at configuration ``q`` (position and quaternion)."""
+    T = forward_kinematics(registry.get(robot_id), np.array(q), [frame])[frame]
     return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}
 
 
@@ -83,10 +89,70 @@ def test_seed_as_map_and_frame(client, registry) -> None:
     assert out["success"] and out["frame"] == "tool0"
 
 
-def test_large_budget_runs_in_the_pool(client, registry) -> None:
-    body = {"target": ur5_target(registry), "timeout_ms": 100, "max_iterations": 1000}
-    out = client.post("/robots/ur5/ik", json=body).json()
-    assert out["success"]
+def test_budgets_above_5_ms_and_collision_checks_run_in_the_pool(
+    client, registry, monkeypatch
+) -> None:
+    """Up to 5 ms without collision checks: solved on the event loop; otherwise offloaded."""
+    offloaded = []
+    real = ik_api.offload_cancellable
+
+    async def spy(request, fn, *args, **kwargs):
+        offloaded.append(fn.__name__)
+        return await real(request, fn, *args, **kwargs)
+
+    monkeypatch.setattr(ik_api, "offload_cancellable", spy)
+    target = ur5_target(registry)
+    for body, pooled in [
+        ({"timeout_ms": 5.0}, False),
+        ({"timeout_ms": 6.0}, True),
+        ({"timeout_ms": 100, "max_iterations": 1000}, True),
+        ({"timeout_ms": 5.0, "avoid_collisions": True}, True),
+    ]:
+        offloaded.clear()
+        out = client.post("/robots/ur5/ik", json={"target": target, **body}).json()
+        assert out["success"]
+        check_pose(registry, out["q"], target)
+        assert offloaded == (["_solve_one"] if pooled else []), body
+
+
+def test_the_seed_picks_the_answer(client, registry) -> None:
+    """UR5: each closed-form branch, sent as the seed (list or joint map), is the answer;
+    Panda: a seed that already solves the target comes back after one evaluation."""
+    target = ur5_target(registry)
+    out = client.post("/robots/ur5/ik", json={"target": target, "num_solutions": 8}).json()
+    branches = [s["q"] for s in out["solutions"]]
+    assert len(branches) == 8
+    names = registry.get("ur5").joint_names
+    for q in branches:
+        check_pose(registry, q, target)
+        for seed in (q, dict(zip(names, q, strict=True))):
+            out = client.post("/robots/ur5/ik", json={"target": target, "seed": seed}).json()
+            np.testing.assert_allclose(out["q"], q, atol=1e-12)
+    q_panda = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5, 0.03]
+    target = fk_target(registry, q_panda, "panda", "panda_link8")
+    body = {"target": target, "frame": "panda_link8", "seed": q_panda, "timeout_ms": 500}
+    out = client.post("/robots/panda/ik", json=body).json()
+    assert out["success"] and out["iterations"] <= 1 and out["q"] == q_panda
+
+
+def test_batch_seeds_chained_or_not(client, registry) -> None:
+    """Panda, one target twice from a far seed: chained, the second target starts at the
+    first answer (one evaluation); not chained, it repeats the first search exactly. A seed
+    that solves the target is the answer."""
+    q_panda = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5, 0.03]
+    target = fk_target(registry, q_panda, "panda", "panda_link8")
+    body = {"targets": [target, target], "frame": "panda_link8", "timeout_ms": 500}
+    far = [-0.5, 0.8, 0.6, -1.0, -0.7, 2.5, -0.5, 0.01]
+    for chain in (True, False):
+        r = client.post("/robots/panda/ik/batch", json={**body, "seed": far, "chain_seeds": chain})
+        first, second = r.json()["results"]
+        assert first["success"] and second["success"] and first["iterations"] > 1
+        assert second["q"] == first["q"]
+        assert second["iterations"] == (1 if chain else first["iterations"])
+    first, _ = client.post("/robots/panda/ik/batch", json={**body, "seed": q_panda}).json()[
+        "results"
+    ]
+    assert first["iterations"] <= 1 and first["q"] == q_panda
 
 
 def test_batch_chained_and_from_one_seed(client, registry) -> None:

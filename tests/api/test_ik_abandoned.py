@@ -23,6 +23,7 @@ from fastapi.testclient import TestClient
 
 from app.kinematics import ik
 from app.kinematics.errors import Cancelled
+from app.kinematics.ik.problem import IKOptions
 from app.main import create_app
 from app.registry import Registry
 from app.settings import Settings
@@ -118,10 +119,20 @@ def test_solver_stops_when_cancelled(registry: Registry, mode: str) -> None:
     threading.Timer(0.2, cancel.set).start()
     t0 = time.monotonic()
     with pytest.raises(Cancelled):
-        ik.solve(robot, robot.ee_frame, target, mode=mode, timeout_ms=60_000, cancel=cancel)
+        ik.solve(
+            robot,
+            target,
+            IKOptions(frame=robot.ee_frame, mode=mode, timeout_ms=60_000),
+            cancel=cancel,
+        )
     assert time.monotonic() - t0 < 30
     with pytest.raises(Cancelled):
-        ik.solve(robot, robot.ee_frame, target, mode=mode, timeout_ms=60_000, cancel=cancel)
+        ik.solve(
+            robot,
+            target,
+            IKOptions(frame=robot.ee_frame, mode=mode, timeout_ms=60_000),
+            cancel=cancel,
+        )
 
 
 def test_collision_batch_stops_when_cancelled(registry: Registry) -> None:

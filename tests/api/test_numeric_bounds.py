@@ -17,6 +17,7 @@ from fastapi.testclient import TestClient
 
 from app.kinematics import ik
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.ik.problem import MODES, IKOptions
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
 from tests.helpers import problem
 from tests.kinematics.chains import planar_2link
@@ -191,14 +192,14 @@ HUGE = """<robot name="huge"><link name="base"/><link name="l1"/><link name="l2"
 
 
 @pytest.mark.filterwarnings("ignore::RuntimeWarning")  # overflowing geometry, on purpose
-@pytest.mark.parametrize("mode", ik.MODES)
+@pytest.mark.parametrize("mode", MODES)
 def test_ik_core_refuses_a_pose_that_overflows(mode: str) -> None:
     """Whatever import rules apply, the solver itself never reports a non-finite error (nor
     a 'converged' orientation whose position error is inf)."""
     robot = RobotModel("huge", HUGE, ee_frame="tip")
     target = pin.SE3(np.eye(3), np.array([0.1, 0.2, 0.3]))
     with pytest.raises(InvalidInputError) as err:
-        ik.solve(robot, "tip", target, mode=mode, timeout_ms=5.0)
+        ik.solve(robot, target, IKOptions(frame="tip", mode=mode, timeout_ms=5.0))
     assert err.value.field == "robot_id"
 
 
@@ -211,10 +212,8 @@ def test_ik_searches_within_the_bound_when_limits_are_wider() -> None:
     q_true = np.array([0.4, 1.1])
     x = math.cos(0.4) + 0.7 * math.cos(1.5)
     y = math.sin(0.4) + 0.7 * math.sin(1.5)
-    res = ik.solve(
-        robot, "tip", pin.SE3(np.eye(3), np.array([x, y, 0.0])), mode="position",
-        timeout_ms=1000.0, num_solutions=2,
-    )  # fmt: skip
+    options = IKOptions(frame="tip", mode="position", timeout_ms=1000.0, num_solutions=2)
+    res = ik.solve(robot, pin.SE3(np.eye(3), np.array([x, y, 0.0])), options)
     assert res.success
     assert np.all(np.abs(res.q) <= MAX_JOINT_VALUE)
     assert any(np.allclose(s.q, q_true, atol=1e-6) for s in res.solutions), res.solutions

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import pytest
 
@@ -37,6 +39,8 @@ def test_first_ik_query_gets_its_whole_budget(monkeypatch) -> None:
     import pinocchio as pin
 
     from app.kinematics import ik
+    from app.kinematics.ik.precompute import IKChain
+    from app.kinematics.ik.problem import IKOptions
     from app.registry import Registry
 
     now = [0.0]
@@ -45,17 +49,17 @@ def test_first_ik_query_gets_its_whole_budget(monkeypatch) -> None:
         now[0] += 1e-6
         return now[0]
 
-    build = ik.Chain.__init__
+    build = IKChain.__init__
 
     def slow_build(self, *args, **kwargs) -> None:
         build(self, *args, **kwargs)
         now[0] += 1.0
 
-    monkeypatch.setattr(ik.time, "perf_counter", clock)
-    monkeypatch.setattr(ik.Chain, "__init__", slow_build)
+    monkeypatch.setattr(time, "perf_counter", clock)
+    monkeypatch.setattr(IKChain, "__init__", slow_build)
     robot = Registry().get("panda")  # a fresh model: no chain cached yet
     target = pin.SE3(np.diag([1.0, -1.0, -1.0]), np.array([0.4, 0.1, 0.5]))
-    res = ik.solve(robot, "panda_hand_tcp", target, timeout_ms=5.0)
+    res = ik.solve(robot, target, IKOptions(frame="panda_hand_tcp", timeout_ms=5.0))
     assert res.success and res.status == "converged" and res.iterations > 0
 
 

@@ -374,6 +374,7 @@ def test_collision_aware_ik_core(planar2: RobotModel) -> None:
     import pinocchio as pin
 
     from app.kinematics import ik
+    from app.kinematics.ik.problem import IKOptions
 
     x, y = 1.2, 0.6
     c2 = (x * x + y * y - L1**2 - L2**2) / (2 * L1 * L2)
@@ -385,7 +386,10 @@ def test_collision_aware_ik_core(planar2: RobotModel) -> None:
     accept = collision_filter(planar2, parse_obstacles([sphere("rock", elbow, 0.1)]))
     target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
     res = ik.solve(
-        planar2, "tool", target, mode="position", num_solutions=2, accept=accept, timeout_ms=300
+        planar2,
+        target,
+        IKOptions(frame="tool", mode="position", num_solutions=2, timeout_ms=300),
+        accept=accept,
     )
     assert res.success and len(res.solutions) == 1
     np.testing.assert_allclose(res.solutions[0].q, free, atol=1e-6)

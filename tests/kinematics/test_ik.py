@@ -18,6 +18,9 @@ from hypothesis import strategies as st
 from app.kinematics import ik
 from app.kinematics.analytic_ik.planar2 import into_limits, planar2_geometry, planar2_solutions
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik.problem import IKOptions, IKProblem
+from app.kinematics.ik.search import DISTINCT, Search
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
 from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
@@ -65,7 +68,9 @@ def test_reachable_targets_are_solved(
     robot = registry.get(robot_id)
     q_true = random_q(robot, np.random.default_rng(seed))
     target = reference_pose(robot, q_true, frame)
-    res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS, analytic=analytic)
+    res = ik.solve(
+        robot, se3(target), IKOptions(frame=frame, timeout_ms=BUDGET_MS, analytic=analytic)
+    )
     assert res.method == ("analytic" if analytic and robot_id == "ur5" else "numeric")
     assert res.success, (res.status, res.position_error, res.orientation_error)
     assert res.status == "converged"
@@ -84,13 +89,15 @@ def test_several_distinct_solutions_sorted_by_seed_distance(registry) -> None:
     q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
     target = reference_pose(robot, q_true, "tool0")
     seed = q_true + 0.05
-    res = ik.solve(robot, "tool0", se3(target), seed=seed, num_solutions=4, timeout_ms=2000)
+    res = ik.solve(
+        robot, se3(target), IKOptions(frame="tool0", num_solutions=4, timeout_ms=2000), seed=seed
+    )
     assert res.success and len(res.solutions) >= 2
     dists = [np.linalg.norm(s.q - seed) for s in res.solutions]
     assert dists == sorted(dists)
     for a in range(len(res.solutions)):
         for b in range(a):
-            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > ik.DISTINCT
+            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > DISTINCT
         dp, dr = pose_error(reference_pose(robot, res.solutions[a].q, "tool0"), target)
         assert dp <= TOL and dr <= TOL
 
@@ -104,7 +111,9 @@ def test_ur_closed_form_finds_all_branches(registry, robot_id: str, frame: str) 
     robot = registry.get(robot_id)
     q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
     target = reference_pose(robot, q_true, frame)
-    res = ik.solve(robot, frame, se3(target), num_solutions=8, timeout_ms=BUDGET_MS)
+    res = ik.solve(
+        robot, se3(target), IKOptions(frame=frame, num_solutions=8, timeout_ms=BUDGET_MS)
+    )
     assert res.method == "analytic" and len(res.solutions) == 8
     assert any(np.allclose(s.q, q_true, atol=1e-9) for s in res.solutions)
     for s in res.solutions:
@@ -128,7 +137,9 @@ def test_ur_closed_form_on_z1_respects_narrow_limits(registry) -> None:
     for _ in range(5):
         q_true = random_q(robot, rng)
         target = reference_pose(robot, q_true, frame)
-        res = ik.solve(robot, frame, se3(target), num_solutions=2, timeout_ms=100.0)
+        res = ik.solve(
+            robot, se3(target), IKOptions(frame=frame, num_solutions=2, timeout_ms=100.0)
+        )
         assert res.success and res.method.startswith("analytic")
         for s in res.solutions:
             assert within_limits(robot, s.q)
@@ -143,7 +154,7 @@ def test_ur_geometry_is_detected_only_where_it_applies(registry) -> None:
     for rid, expected in cases:
         robot = registry.get(rid)
         frame = "panda_link8" if rid == "panda" else robot.ee_frame
-        ch = ik.chain(robot, frame)
+        ch = ik_chain(robot, frame)
         assert (ur_geometry(robot, ch.active, ch.frame_id) is not None) == expected, rid
 
 
@@ -162,11 +173,28 @@ def _planar_closed_form(l1: float, l2: float, x: float, y: float) -> set[tuple[f
 def test_planar2_returns_both_elbow_solutions(registry, x: float, y: float) -> None:
     robot = registry.get("planar2")  # DH: l1 = 1.0, l2 = 0.8, frame tool at the tip
     target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
-    res = ik.solve(robot, robot.ee_frame, target, mode="position", num_solutions=2)
+    res = ik.solve(robot, target, IKOptions(frame=robot.ee_frame, mode="position", num_solutions=2))
     assert res.success and len(res.solutions) == 2
     got = {(round(s.q[0], 9), round(s.q[1], 9)) for s in res.solutions}
     assert got == _planar_closed_form(1.0, 0.8, x, y)
     assert res.method == "analytic"
+
+
+@pytest.mark.parametrize(("x", "y"), [(1.2, 0.7), (-0.4, 1.1)])
+def test_numeric_search_reports_each_solution_once(registry, x: float, y: float) -> None:
+    """The 2-link arm has exactly two solutions: the numeric search (restarts converging to
+    them again and again) asked for three reports those two, each once."""
+    robot = registry.get("planar2")
+    target = pin.SE3(np.eye(3), np.array([x, y, 0.0]))
+    options = IKOptions(
+        frame=robot.ee_frame, mode="position", num_solutions=3, analytic=False,
+        tolerance=(1e-9, 1e-9), timeout_ms=60_000, max_iterations=400,
+    )  # fmt: skip
+    res = ik.solve(robot, target, options)
+    assert res.success and res.status == "converged" and res.method == "numeric"
+    assert len(res.solutions) == 2
+    got = {(round(s.q[0], 6), round(s.q[1], 6)) for s in res.solutions}
+    assert got == {(round(a, 6), round(b, 6)) for a, b in _planar_closed_form(1.0, 0.8, x, y)}
 
 
 def _tilted_planar_urdf() -> str:
@@ -190,7 +218,7 @@ def test_planar2_closed_form_in_a_general_placement() -> None:
     robot = RobotModel("tilted2", _tilted_planar_urdf(), ee_frame="tool")
     q_true = np.array([0.7, -1.2])
     target = reference_pose(robot, q_true, "tool")
-    res = ik.solve(robot, "tool", se3(target), mode="position", num_solutions=2)
+    res = ik.solve(robot, se3(target), IKOptions(frame="tool", mode="position", num_solutions=2))
     assert res.method == "analytic" and len(res.solutions) == 2
     assert any(np.allclose(s.q, q_true, atol=1e-9) for s in res.solutions)
     for s in res.solutions:
@@ -217,7 +245,7 @@ def test_into_limits() -> None:
 def test_target_outside_workspace_returns_best_effort(registry) -> None:
     robot = registry.get("ur5")
     target = pin.SE3(np.eye(3), np.array([3.0, 0.0, 0.5]))  # UR5 reach is ~0.85 m
-    res = ik.solve(robot, "tool0", target, timeout_ms=20.0)
+    res = ik.solve(robot, target, IKOptions(frame="tool0", timeout_ms=20.0))
     assert not res.success and res.solutions == []
     assert res.status == "timeout"
     assert within_limits(robot, res.q)
@@ -229,14 +257,14 @@ def test_target_outside_workspace_returns_best_effort(registry) -> None:
 def test_iteration_cap_reports_not_converged(registry) -> None:
     robot = registry.get("ur5")
     target = pin.SE3(np.eye(3), np.array([3.0, 0.0, 0.5]))
-    res = ik.solve(robot, "tool0", target, timeout_ms=1000.0, max_iterations=25)
+    res = ik.solve(robot, target, IKOptions(frame="tool0", timeout_ms=1000.0, max_iterations=25))
     assert not res.success and res.status == "not_converged" and res.iterations == 25
 
 
 def test_planar2_unreachable_is_not_a_success(registry) -> None:
     robot = registry.get("planar2")
     target = pin.SE3(np.eye(3), np.array([2.5, 0.0, 0.0]))
-    res = ik.solve(robot, robot.ee_frame, target, mode="position", timeout_ms=10.0)
+    res = ik.solve(robot, target, IKOptions(frame=robot.ee_frame, mode="position", timeout_ms=10.0))
     assert not res.success
     # The best effort stretches towards the target: distance = 2.5 − (l1 + l2).
     assert res.position_error == pytest.approx(0.7, abs=1e-3)
@@ -250,7 +278,9 @@ def test_position_mode_on_a_three_joint_arm(registry, robot_id: str) -> None:
         q_true = random_q(robot, rng)
         target = reference_pose(robot, q_true, robot.ee_frame)
         goal = pin.SE3(np.eye(3), target[:3, 3].copy())  # orientation ignored
-        res = ik.solve(robot, robot.ee_frame, goal, mode="position", timeout_ms=BUDGET_MS)
+        res = ik.solve(
+            robot, goal, IKOptions(frame=robot.ee_frame, mode="position", timeout_ms=BUDGET_MS)
+        )
         assert res.success
         T = reference_pose(robot, res.q, robot.ee_frame)
         assert np.linalg.norm(T[:3, 3] - target[:3, 3]) <= TOL
@@ -261,7 +291,7 @@ def test_orientation_mode(registry) -> None:
     robot = registry.get("ur5")
     target = reference_pose(robot, np.array([0.1, -0.8, 1.0, 0.3, -0.7, 2.0]), "tool0")
     goal = pin.SE3(target[:3, :3].copy(), np.array([9.0, 9.0, 9.0]))  # position ignored
-    res = ik.solve(robot, "tool0", goal, mode="orientation", timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, goal, IKOptions(frame="tool0", mode="orientation", timeout_ms=BUDGET_MS))
     assert res.success
     _, dr = pose_error(reference_pose(robot, res.q, "tool0"), target)
     assert dr <= TOL
@@ -274,7 +304,7 @@ def test_zero_weight_frees_a_component(registry) -> None:
     Rz = pin.rpy.rpyToMatrix(0.0, 0.0, 0.3)
     goal = pin.SE3(Rz @ target[:3, :3], target[:3, 3].copy())
     w = np.array([1, 1, 1, 1, 1, 0.0])
-    res = ik.solve(robot, "tool0", goal, weights=w, timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, goal, IKOptions(frame="tool0", weights=tuple(w), timeout_ms=BUDGET_MS))
     assert res.success
     T = reference_pose(robot, res.q, "tool0")
     assert np.linalg.norm(T[:3, 3] - target[:3, 3]) <= TOL
@@ -294,7 +324,7 @@ def test_continuous_joints_use_wire_angles(registry) -> None:
         q_true = random_q(robot, rng)
         q_true[cont] += 2 * np.pi  # the same pose with angles beyond π
         target = reference_pose(robot, q_true, frame)
-        res = ik.solve(robot, frame, se3(target), timeout_ms=BUDGET_MS)
+        res = ik.solve(robot, se3(target), IKOptions(frame=frame, timeout_ms=BUDGET_MS))
         assert res.success
         assert res.q.shape == (robot.n,)
         assert np.all(np.abs(res.q[cont]) <= np.pi + 1e-12)
@@ -313,23 +343,117 @@ def test_accept_predicate_rejects_solutions(registry) -> None:
         calls.append(q.copy())
         return q[2] < 0.0  # elbow on the other side than q_true
 
-    res = ik.solve(robot, "tool0", target, seed=q_true, accept=accept, timeout_ms=2000)
+    res = ik.solve(
+        robot, target, IKOptions(frame="tool0", timeout_ms=2000), seed=q_true, accept=accept
+    )
     assert calls and res.success and res.q[2] < 0.0
     dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
     assert dp <= TOL and dr <= TOL
-    never = ik.solve(robot, "tool0", target, accept=lambda q: False, timeout_ms=10.0)
+    never = ik.solve(
+        robot, target, IKOptions(frame="tool0", timeout_ms=10.0), accept=lambda q: False
+    )
     assert not never.success and never.solutions == []
 
 
-def test_redundant_arm_stays_near_the_seed(registry) -> None:
-    """Panda from a seed next to a solution: the answer stays in that neighbourhood."""
+PANDA_Q = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5, 0.03]
+
+
+def panda_two_solutions(robot: RobotModel) -> tuple[np.ndarray, np.ndarray, pin.SE3]:
+    """Two configurations 0.5 rad apart (elbow swung about the shoulder–wrist line, other
+    finger opening) that both place panda_link8 at one pose, checked by yourdfpy."""
+    q_a = np.array(PANDA_Q)
+    T = reference_pose(robot, q_a, "panda_link8")
+    start = q_a + [0.6, 0.0, -0.6, 0.0, 0.0, 0.0, 0.0, -0.02]
+    options = IKOptions(frame="panda_link8", tolerance=(1e-10, 1e-10), timeout_ms=BUDGET_MS)
+    q_b = ik.solve(robot, se3(T), options, seed=start).q
+    dp, dr = pose_error(reference_pose(robot, q_b, "panda_link8"), T)
+    assert dp <= 1e-9 and dr <= 1e-9 and within_limits(robot, q_b)
+    assert np.abs(q_b - q_a).max() > 0.5
+    return q_a, q_b, se3(T)
+
+
+@pytest.mark.parametrize("mode", ["pose", "position"])  # compiled and Python loops
+def test_a_seed_that_solves_the_target_is_the_answer(registry, mode: str) -> None:
+    """Each of two different solutions, given as the seed, comes back unchanged after one
+    evaluation (the finger, which does not move the frame, keeps its seed value too)."""
     robot = registry.get("panda")
-    q_true = robot.mid_range()
-    q_true[:7] = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5]
-    target = se3(reference_pose(robot, q_true, "panda_link8"))
-    res = ik.solve(robot, "panda_link8", target, seed=q_true + 0.02, timeout_ms=BUDGET_MS)
-    assert res.success and res.restarts == 0
-    assert np.abs(res.q - q_true).max() < 0.1
+    options = IKOptions(frame="panda_link8", mode=mode, timeout_ms=BUDGET_MS)
+    q_a, q_b, target = panda_two_solutions(robot)
+    for q in (q_a, q_b):
+        res = ik.solve(robot, target, options, seed=q)
+        assert res.success and res.iterations <= 1 and res.restarts == 0
+        np.testing.assert_array_equal(res.q, q)
+
+
+def test_redundant_arm_answers_near_its_own_seed(registry) -> None:
+    """Seeds near two different solutions of one pose: each answer stays by its own seed."""
+    robot = registry.get("panda")
+    q_a, q_b, target = panda_two_solutions(robot)
+    options = IKOptions(frame="panda_link8", timeout_ms=BUDGET_MS)
+    nudge = np.array([0.03, -0.02, 0.03, 0.02, -0.03, 0.02, 0.03, 0.0])
+    for q in (q_a, q_b):
+        res = ik.solve(robot, target, options, seed=q + nudge)
+        assert res.success and res.restarts == 0
+        assert np.abs(res.q - q).max() < 0.1
+
+
+def test_closed_form_branch_nearest_the_seed_comes_first(registry) -> None:
+    """UR5: every closed-form branch, given as the seed, is the answer."""
+    robot = registry.get("ur5")
+    target = reference_pose(robot, np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3]), "tool0")
+    branches = ik.solve(robot, se3(target), IKOptions(frame="tool0", num_solutions=8)).solutions
+    assert len(branches) == 8
+    for b in branches:
+        res = ik.solve(robot, se3(target), IKOptions(frame="tool0"), seed=b.q)
+        assert res.method == "analytic"
+        np.testing.assert_allclose(res.q, b.q, atol=1e-12)
+        dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target)
+        assert dp <= TOL and dr <= TOL
+
+
+@pytest.mark.parametrize(
+    ("weights", "axis", "accepted"),
+    [
+        (None, (1.0, 0.0, 0.0), False),
+        (None, (0.0, 0.0, 1.0), False),
+        ((1, 1, 1, 1, 1, 0), (1.0, 0.0, 0.0), False),
+        ((1, 1, 1, 1, 1, 0), (0.0, 0.0, 1.0), True),  # the error lies on a freed component
+    ],
+)
+def test_offer_refuses_a_candidate_outside_the_orientation_tolerance(
+    registry, weights, axis, accepted: bool
+) -> None:
+    """A candidate at the target position but 0.01 rad off in orientation (world axis
+    ``axis``) is not a solution unless that rotation component is freed."""
+    robot = registry.get("ur5")
+    q = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    T = reference_pose(robot, q, "tool0")
+    # R R_tᵀ = exp(0.01·axis): the frame is rotated 0.01 rad about ``axis`` (world) from it.
+    target = pin.SE3(pin.exp3(-0.01 * np.array(axis)) @ T[:3, :3], T[:3, 3].copy())
+    options = IKOptions(frame="tool0", weights=weights)
+    ch = ik_chain(robot, "tool0")
+    search = Search(IKProblem(robot, ch, target, q, options, options.task()))
+    dp, dr = pose_error(T, target.homogeneous)
+    assert dp <= 1e-12 and dr == pytest.approx(0.01)  # meets position, not orientation
+    assert search.offer(q[ch.active]) is accepted
+    assert len(search.solutions) == accepted
+
+
+@pytest.mark.parametrize(("mode", "accepted"), [("pose", False), ("orientation", True)])
+def test_offer_refuses_a_candidate_outside_the_position_tolerance(
+    registry, mode: str, accepted: bool
+) -> None:
+    """A candidate at the target orientation but 1 mm away is a solution only when the
+    position is free."""
+    robot = registry.get("ur5")
+    q = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
+    T = reference_pose(robot, q, "tool0")
+    target = pin.SE3(T[:3, :3].copy(), T[:3, 3] + [0.0, 1e-3, 0.0])
+    options = IKOptions(frame="tool0", mode=mode)
+    ch = ik_chain(robot, "tool0")
+    search = Search(IKProblem(robot, ch, target, q, options, options.task()))
+    assert search.offer(q[ch.active]) is accepted
+    assert len(search.solutions) == accepted
 
 
 def test_quaternion_target_matches_matrix(registry) -> None:
@@ -338,7 +462,7 @@ def test_quaternion_target_matches_matrix(registry) -> None:
     quat /= np.linalg.norm(quat)
     R = quaternion_to_matrix(quat)
     target = pin.SE3(R, np.array([0.3, 0.2, 0.4]))
-    res = ik.solve(robot, "tool0", target, timeout_ms=BUDGET_MS)
+    res = ik.solve(robot, target, IKOptions(frame="tool0", timeout_ms=BUDGET_MS))
     assert res.success
     dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
     assert dp <= TOL and dr <= TOL
@@ -352,21 +476,27 @@ def test_quaternion_target_matches_matrix(registry) -> None:
         ({"timeout_ms": -1.0}, "timeout_ms"),
         ({"max_iterations": 0}, "max_iterations"),
         ({"tolerance": (0.0, 1e-5)}, "tolerance"),
-        ({"weights": np.array([1, 1, 1, 1, 1, -1.0])}, "weights"),
-        ({"weights": np.zeros(6)}, "weights"),
-        ({"seed": np.zeros(3)}, "seed"),
+        ({"weights": (1, 1, 1, 1, 1, -1.0)}, "weights"),
+        ({"weights": (0.0,) * 6}, "weights"),
     ],
 )
-def test_bad_arguments(registry, kwargs: dict, field: str) -> None:
-    robot = registry.get("ur5")
+def test_bad_options(kwargs: dict, field: str) -> None:
     with pytest.raises(InvalidInputError) as err:
-        ik.solve(robot, "tool0", pin.SE3.Identity(), **kwargs)
+        IKOptions(frame="tool0", **kwargs)
     assert err.value.field == field
+
+
+def test_bad_seed(registry) -> None:
+    with pytest.raises(InvalidInputError) as err:
+        ik.solve(
+            registry.get("ur5"), pin.SE3.Identity(), IKOptions(frame="tool0"), seed=np.zeros(3)
+        )
+    assert err.value.field == "seed"
 
 
 def test_unknown_frame(registry) -> None:
     with pytest.raises(UnknownNameError):
-        ik.solve(registry.get("ur5"), "tool9", pin.SE3.Identity())
+        ik.solve(registry.get("ur5"), pin.SE3.Identity(), IKOptions(frame="tool9"))
 
 
 def test_error_jacobian_and_step_equivalence(registry) -> None:

@@ -13,6 +13,8 @@ import pytest
 from app.kinematics import ik, ik_kernel
 from app.kinematics.analytic_ik import planar2, ur
 from app.kinematics.fk import forward_kinematics
+from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik.problem import IKOptions
 from app.kinematics.jacobian import frame_jacobian
 from app.kinematics.models import RobotModel
 from tests.kinematics.chains import continuous_arm, rrp_like
@@ -32,7 +34,7 @@ def test_pose_and_jacobian_match_pinocchio(registry, robot_id: str, frame: str |
     """Revolute, prismatic, offsets, mm/deg DH tables: pose and world Jacobian to 1e-12."""
     robot = registry.get(robot_id)
     frame = frame or robot.ee_frame
-    ch = ik.chain(robot, frame)
+    ch = ik_chain(robot, frame)
     assert ch.compiled is not None
     rng = np.random.default_rng(3)
     for _ in range(20):
@@ -49,7 +51,7 @@ def test_hand_written_chains_with_prismatic_and_continuous_joints() -> None:
     for urdf, frame in ((rrp_like(), "tip"), (continuous_arm(), None)):
         robot = RobotModel("chain", urdf)
         frame = frame or robot.ee_frame
-        ch = ik.chain(robot, frame)
+        ch = ik_chain(robot, frame)
         assert ch.compiled is not None
         for q in np.random.default_rng(5).uniform(-3.0, 3.0, (10, robot.n)):
             q = np.clip(q, robot.lower, robot.upper)
@@ -63,11 +65,11 @@ def test_hand_written_chains_with_prismatic_and_continuous_joints() -> None:
 def test_mimic_chains_take_the_python_loop(registry) -> None:
     """panda_rightfinger moves with a mimic joint: not a plain serial chain."""
     robot = registry.get("panda")
-    assert ik.chain(robot, "panda_rightfinger").compiled is None
+    assert ik_chain(robot, "panda_rightfinger").compiled is None
     q = robot.mid_range()
     q[7] = 0.02
     T = forward_kinematics(robot, q, ["panda_rightfinger"])["panda_rightfinger"]
-    res = ik.solve(robot, "panda_rightfinger", se3(T), timeout_ms=500)
+    res = ik.solve(robot, se3(T), IKOptions(frame="panda_rightfinger", timeout_ms=500))
     assert res.success
 
 
@@ -88,7 +90,7 @@ def test_log3_against_pinocchio_and_exp3(angle: float) -> None:
 
 def test_table_distances_match_numpy(registry) -> None:
     robot = registry.get("panda")
-    ch = ik.chain(robot, "panda_link8")
+    ch = ik_chain(robot, "panda_link8")
     M, W2 = ch.sample_poses()
     rng = np.random.default_rng(9)
     for _ in range(10):
@@ -108,18 +110,42 @@ def test_both_loops_solve_and_agree_with_yourdfpy(registry, robot_id: str) -> No
     python = RobotModel(compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
                         srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame)  # fmt: skip
     frame = compiled.ee_frame
-    assert ik.chain(compiled, frame).compiled is not None
-    ik.chain(python, frame).compiled = None
+    assert ik_chain(compiled, frame).compiled is not None
+    ik_chain(python, frame).compiled = None
     rng = np.random.default_rng(21)
     for _ in range(25):
         q_true = random_q(compiled, rng)
         target = reference_pose(compiled, q_true, frame)
         for robot in (compiled, python):
-            res = ik.solve(robot, frame, se3(target), timeout_ms=500, analytic=False)
+            res = ik.solve(
+                robot, se3(target), IKOptions(frame=frame, timeout_ms=500, analytic=False)
+            )
             assert res.success, robot is python
             assert np.all(res.q >= robot.lower) and np.all(res.q <= robot.upper)
             dp, dr = pose_error(reference_pose(robot, res.q, frame), target)
             assert dp <= TOL and dr <= TOL
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("puma560", None)])
+def test_compiled_and_python_loops_take_the_same_iterates(registry, robot_id, frame) -> None:
+    """The compiled driver repeats the Python loop step for step: from the same seeds, the
+    same iteration and restart counts and the same answers (to rounding), reachable or not."""
+    compiled = registry.get(robot_id)
+    python = RobotModel(compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
+                        srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame)  # fmt: skip
+    frame = frame or compiled.ee_frame
+    ik_chain(python, frame).compiled = None
+    options = IKOptions(frame=frame, timeout_ms=60_000, max_iterations=150, analytic=False)
+    rng = np.random.default_rng(8)
+    for k in range(12):
+        target = se3(reference_pose(compiled, random_q(compiled, rng), frame))
+        if k % 4 == 3:  # out of reach: the cap ends both searches
+            target.translation = target.translation * 3.0
+        seed = random_q(compiled, rng)
+        a = ik.solve(compiled, target, options, seed=seed)
+        b = ik.solve(python, target, options, seed=seed)
+        assert (a.success, a.iterations, a.restarts) == (b.success, b.iterations, b.restarts)
+        np.testing.assert_allclose(a.q, b.q, rtol=0, atol=1e-8)
 
 
 def test_iteration_cap_and_best_effort_on_the_compiled_loop(registry) -> None:
@@ -127,7 +153,9 @@ def test_iteration_cap_and_best_effort_on_the_compiled_loop(registry) -> None:
     its true error (Pinocchio FK), inside the limits."""
     robot = registry.get("panda")
     target = pin.SE3(np.eye(3), np.array([2.0, 0.0, 0.5]))  # Panda reaches ~0.86 m
-    res = ik.solve(robot, "panda_link8", target, timeout_ms=2000, max_iterations=60)
+    res = ik.solve(
+        robot, target, IKOptions(frame="panda_link8", timeout_ms=2000, max_iterations=60)
+    )
     assert not res.success and res.status == "not_converged" and res.iterations == 60
     assert np.all(res.q >= robot.lower) and np.all(res.q <= robot.upper)
     T = forward_kinematics(robot, res.q, ["panda_link8"])["panda_link8"]
@@ -141,7 +169,7 @@ def test_compiled_ur_closed_form_equals_the_python_one(registry, robot_id, frame
     """Same branches, same order, same shifts into the limits as ur_solutions + into_limits
     (whose answers test_ik checks against yourdfpy)."""
     robot = registry.get(robot_id)
-    ch = ik.chain(robot, frame)
+    ch = ik_chain(robot, frame)
     geo = ch.closed_form[0]
     assert geo is not None
     lo, hi = robot.lower[ch.active], robot.upper[ch.active]

@@ -1,4 +1,4 @@
-"""``ik.kernel_cache_stats`` counts every compiled kernel of the core.
+"""``ik.compiled.kernel_cache_stats`` counts every compiled kernel of the core.
 
 The container build runs ``python -m app warm-up --require-cache`` and trusts these counts to
 prove that every kernel loads from the image's Numba cache; a kernel module the count
@@ -13,7 +13,8 @@ import pkgutil
 import pytest
 
 import app.kinematics
-from app.kinematics import ik, ik_kernel
+from app.kinematics import ik_kernel
+from app.kinematics.ik.compiled import kernel_cache_stats, warm_up
 
 pytestmark = pytest.mark.skipif(not ik_kernel.available(), reason="Numba not installed")
 
@@ -33,11 +34,11 @@ def _dispatchers() -> list[object]:
 
 
 def test_stats_count_every_compiled_signature_of_every_core_kernel() -> None:
-    ik.warm_up()
+    warm_up()
     dispatchers = _dispatchers()
     modules = {d.__module__ for d in dispatchers}
     assert {"app.kinematics.ik_kernel", "app.kinematics.analytic_ik.ur"} <= modules
     signatures = sum(len(d.signatures) for d in dispatchers)
-    stats = ik.kernel_cache_stats()
+    stats = kernel_cache_stats()
     assert signatures > 0
     assert stats["loaded"] + stats["compiled"] == signatures

@@ -39,7 +39,7 @@ from app.kinematics.ik_kernel import available as _compiled_available
 from app.kinematics.models import RobotModel
 
 if TYPE_CHECKING:
-    from app.kinematics.ik import Chain
+    from app.kinematics.ik.precompute import IKChain
 
 
 def warm_up() -> None:
@@ -47,7 +47,7 @@ def warm_up() -> None:
     ur.warm_up()
 
 
-def prepare(robot: RobotModel, ch: Chain) -> tuple[URType | None, Planar2 | None]:
+def prepare(robot: RobotModel, ch: IKChain) -> tuple[URType | None, Planar2 | None]:
     """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
     for its argument types, so that no query's budget pays for either."""
     fid = ch.frame_id
@@ -63,9 +63,9 @@ def prepare(robot: RobotModel, ch: Chain) -> tuple[URType | None, Planar2 | None
 
 
 def candidates(
-    robot: RobotModel, ch: Chain, target: pin.SE3, mode: str, seed: np.ndarray
+    robot: RobotModel, ch: IKChain, target: pin.SE3, mode: str, seed: np.ndarray
 ) -> Iterator[np.ndarray] | None:
-    """Closed-form candidates for the active joints of ``ch`` (an ``ik.Chain``).
+    """Closed-form candidates for the active joints of ``ch`` (an ``IKChain``).
 
     ``None`` when no closed form applies to this chain and mode; otherwise an iterator over
     candidate configurations of the active joints, moved into the joint limits, roughly

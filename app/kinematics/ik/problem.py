@@ -1,0 +1,234 @@
+"""An IK query's options and inputs, validated once: :class:`IKOptions`, targets, seeds.
+
+Everything semantic about an IK request is checked here, in the core, whoever calls it (the
+HTTP routes, the benchmark, the tests): the mode and its task rows, weights that leave the
+mode nothing to drive, tolerances, budgets, the frame, a target's shape (matrix or
+position/orientation, the components a mode needs), and the seed. Each failure raises
+:class:`~app.kinematics.errors.InvalidInputError` naming the field as the wire spells it
+(``weights``, ``targets.3.orientation``, ``seed.4``). The HTTP layer only checks the wire
+shape (types and ranges, which the OpenAPI document shows).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Literal
+
+import numpy as np
+import pinocchio as pin
+
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.models import MAX_POSITION, RobotModel, check_bounded, check_joint_value
+from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
+
+if TYPE_CHECKING:
+    from app.kinematics.ik.precompute import IKChain
+
+Mode = Literal["pose", "position", "orientation"]
+Status = Literal["converged", "not_converged", "timeout"]
+
+MODES: tuple[str, ...] = ("pose", "position", "orientation")
+#: Task rows of each mode in e = [e_p; e_R].
+MODE_ROWS = {"pose": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "orientation": (3, 4, 5)}
+
+#: Default tolerances: position (m) and orientation (rad).
+DEFAULT_TOLERANCE = (1e-5, 1e-5)
+#: Default time budget (ms).
+DEFAULT_TIMEOUT_MS = 5.0
+#: Largest deviation of RᵀR from I (and of the bottom row from [0 0 0 1]) accepted in a matrix.
+MATRIX_TOL = 1e-6
+
+
+@dataclass(frozen=True, slots=True)
+class IKOptions:
+    """How to solve: the same for every target of a request. Validated on construction.
+
+    Attributes
+    ----------
+    frame
+        The frame to place (any named frame); None: the robot's end effector.
+    mode
+        ``pose`` (6-D), ``position`` (orientation free) or ``orientation`` (position free).
+    weights
+        Optional non-negative weights of the six error components [e_p; e_R] (world axes).
+        A zero weight frees that component; tolerances are checked only on the components
+        with positive weight, position and orientation separately. At least one weight of
+        the mode's rows must be positive.
+    tolerance
+        (position m, orientation rad): success when ‖e_p‖ and ‖e_R‖ (over the checked
+        components) are within them.
+    timeout_ms, max_iterations
+        Budget per target (``time.perf_counter``) and optional cap on Jacobian evaluations.
+    num_solutions
+        How many distinct solutions to collect (sorted by distance to the seed).
+    analytic
+        Try closed forms (:mod:`app.kinematics.analytic_ik`) first where the chain admits one.
+    """
+
+    frame: str | None = None
+    mode: Mode = "pose"
+    weights: tuple[float, ...] | None = None
+    tolerance: tuple[float, float] = DEFAULT_TOLERANCE
+    timeout_ms: float = DEFAULT_TIMEOUT_MS
+    max_iterations: int | None = None
+    num_solutions: int = 1
+    analytic: bool = True
+
+    def __post_init__(self) -> None:
+        mode = self.mode
+        if mode not in MODE_ROWS:
+            raise InvalidInputError(f"unknown mode {mode!r}; use one of {', '.join(MODES)}", "mode")
+        if self.num_solutions < 1:
+            raise InvalidInputError("must be at least 1", "num_solutions")
+        if not self.timeout_ms > 0.0:
+            raise InvalidInputError("must be positive", "timeout_ms")
+        if self.max_iterations is not None and self.max_iterations < 1:
+            raise InvalidInputError("must be at least 1", "max_iterations")
+        tol_p, tol_r = self.tolerance
+        if not (tol_p > 0.0 and tol_r > 0.0):
+            raise InvalidInputError("tolerances must be positive", "tolerance")
+        if self.weights is not None:
+            w = np.asarray(self.weights, dtype=float)
+            if w.shape != (6,) or not np.all(np.isfinite(w)) or np.any(w < 0.0):
+                raise InvalidInputError("give 6 finite, non-negative weights", "weights")
+            if not any(w[i] > 0.0 for i in MODE_ROWS[mode]):
+                raise InvalidInputError(f"every weight of mode {mode!r} is zero", "weights")
+
+    def task(self) -> Task:
+        """The task rows this mode and these weights drive (see :class:`Task`)."""
+        if self.weights is None:
+            return _TASKS[self.mode]
+        rows = np.array(MODE_ROWS[self.mode], dtype=int)
+        w = np.asarray(self.weights, dtype=float)[rows]
+        keep = w > 0.0
+        rows, w = rows[keep], w[keep]
+        sw = None if np.all(w == 1.0) else np.sqrt(w)
+        return Task(rows, sw, bool(np.any(rows < 3)), bool(np.any(rows >= 3)))
+
+
+@dataclass(frozen=True, slots=True)
+class Task:
+    """The rows of e = [e_p; e_R] the solver drives, their √weights (None when all 1), and
+    which errors the tolerances check (position, orientation)."""
+
+    rows: np.ndarray
+    sw: np.ndarray | None
+    check_pos: bool
+    check_rot: bool
+
+    @property
+    def full_pose(self) -> bool:
+        """All six rows with unit weights: the error and step of the module docstring as is."""
+        return self.rows.size == 6 and self.sw is None
+
+
+@dataclass(frozen=True, slots=True)
+class IKProblem:
+    """One validated query: what :class:`~app.kinematics.ik.search.Search` works on.
+
+    Attributes
+    ----------
+    robot, chain
+        The robot and the solver's precomputed chain of the frame to place.
+    target
+        Desired placement of the frame in the root (world) frame.
+    seed
+        Wire configuration to start from; joints that do not support the frame keep their
+        seed value in every answer.
+    options, task
+        The options, and the task rows they select.
+    """
+
+    robot: RobotModel
+    chain: IKChain
+    target: pin.SE3
+    seed: np.ndarray
+    options: IKOptions
+    task: Task
+
+
+_TASKS = {
+    mode: Task(np.array(rows, dtype=int), None, rows[0] < 3, rows[-1] >= 3)
+    for mode, rows in MODE_ROWS.items()
+}
+
+
+def frame_name(robot: RobotModel, frame: str | None) -> str:
+    """``frame``, or the robot's end effector when None (UnknownNameError for a bad name)."""
+    frame = frame or robot.ee_frame
+    robot.frame_id(frame)
+    return frame
+
+
+def check_target(target: pin.SE3) -> None:
+    """Refuse a target position that is not finite or beyond ±MAX_POSITION (``target.position``)."""
+    if not all(math.isfinite(v) and abs(v) <= MAX_POSITION for v in target.translation):
+        raise InvalidInputError(f"must be finite, within ±{MAX_POSITION:g} m", "target.position")
+
+
+def target_placement(
+    position: Sequence[float] | None,
+    orientation: Sequence[float] | None,
+    matrix: Sequence[Sequence[float]] | None,
+    mode: str,
+    field: str = "target",
+) -> pin.SE3:
+    """A target as a Pinocchio SE3, validated; components a mode ignores may be omitted.
+
+    Parameters
+    ----------
+    position, orientation
+        [x, y, z] (m) and the unit quaternion [x, y, z, w], both in the root frame.
+    matrix
+        A 4×4 homogeneous transform instead of position/orientation (orthonormal rotation
+        within :data:`MATRIX_TOL`, projected onto the nearest rotation).
+    mode
+        The IK mode: ``position`` needs no orientation, ``orientation`` no position.
+    field
+        The wire name of the target (``target``, ``targets.3``) for error messages.
+    """
+    if matrix is not None:
+        if position is not None or orientation is not None:
+            raise InvalidInputError("give either matrix or position/orientation", field)
+        M = np.array(matrix, dtype=float)
+        if np.abs(M[3] - np.array([0.0, 0.0, 0.0, 1.0])).max() > MATRIX_TOL:
+            raise InvalidInputError("the last row must be [0, 0, 0, 1]", f"{field}.matrix")
+        R = M[:3, :3]
+        if np.abs(R.T @ R - np.eye(3)).max() > MATRIX_TOL or np.linalg.det(R) <= 0.0:
+            raise InvalidInputError(
+                "the rotation part must be orthonormal with determinant +1", f"{field}.matrix"
+            )
+        for i in range(3):  # the translation column: target.matrix.<row>.3
+            check_bounded(M[i, 3], f"{field}.matrix.{i}.3", MAX_POSITION, "m")
+        U, _, Vt = np.linalg.svd(R)  # nearest rotation (removes rounding)
+        return pin.SE3(U @ Vt, M[:3, 3].copy())
+    p = np.zeros(3)
+    R = np.eye(3)
+    if position is not None:
+        p = np.array(position, dtype=float)
+        check_bounded(p, f"{field}.position", MAX_POSITION, "m")
+    elif mode != "orientation":
+        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
+    if orientation is not None:
+        R = quaternion_to_matrix(unit_quaternion(orientation, f"{field}.orientation"))
+    elif mode != "position":
+        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.orientation")
+    return pin.SE3(R, p)
+
+
+def seed_configuration(
+    robot: RobotModel, seed: Sequence[float] | np.ndarray | Mapping[str, float] | None
+) -> np.ndarray:
+    """Wire seed from a list or a joint → value map (others: middle of their limits);
+    default the middle of the joint limits. Names ``seed``, ``seed.4``, ``seed.<joint>``."""
+    if seed is None:
+        return robot.mid_range()
+    if isinstance(seed, Mapping):
+        out = robot.mid_range()
+        for name, value in seed.items():
+            idx = robot.joint_index(name, field=f"seed.{name}")
+            out[idx] = check_joint_value(value, f"seed.{name}")
+        return out
+    return robot.configuration(seed, field="seed")

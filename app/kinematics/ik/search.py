@@ -1,0 +1,295 @@
+"""The search state of one IK query: candidates, their verification, restarts, the result.
+
+:class:`Search` holds what every loop shares: the verified solutions, the iteration and
+restart counts, the best iterate so far. Candidates come from the closed forms
+(:mod:`app.kinematics.analytic_ik`) and from the loops (:mod:`app.kinematics.ik.dls`,
+:mod:`app.kinematics.ik.compiled`); :meth:`Search.offer` verifies each by a separate
+forward-kinematics evaluation at the wire configuration (error against the target on the
+checked components, joint limits, distinctness, the optional ``accept`` predicate) before
+it counts as a solution. :meth:`Search.restart` picks the next start: the table samples
+nearest the target pose first (full pose), then uniform random configurations.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+import pinocchio as pin
+
+from app.kinematics.errors import Cancelled, InvalidInputError
+from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
+from app.kinematics.ik.problem import IKProblem, Status
+from app.kinematics.models import RobotModel
+
+#: Two solutions are distinct when some joint differs by more than this (rad or m).
+DISTINCT = 1e-3
+#: Restarts taken from the table samples nearest the target before random jumps.
+NEAREST = 32
+#: The loops jump from the seed to the nearest table sample at once when that sample's pose
+#: is much closer to the target (distance ratio below this; see ``dls.NEAREST_FIRST``).
+NEAREST_RATIO = 0.5
+
+_TWO_PI = 2.0 * math.pi
+
+
+@dataclass(slots=True)
+class IKSolution:
+    """One verified solution: wire configuration and its errors against the target."""
+
+    q: np.ndarray
+    position_error: float
+    orientation_error: float
+
+
+@dataclass(slots=True)
+class IKResult:
+    """Outcome of :func:`solve`.
+
+    ``q`` is the best configuration (the first solution, or the lowest-error iterate when
+    nothing converged); ``solutions`` are distinct verified solutions sorted by distance to
+    the seed. ``iterations`` counts Jacobian evaluations over all attempts, ``restarts`` the
+    random jumps, ``method`` is ``analytic``, ``numeric`` or ``analytic+numeric``.
+    """
+
+    success: bool
+    status: Status
+    q: np.ndarray
+    position_error: float
+    orientation_error: float
+    solutions: list[IKSolution] = field(default_factory=list)
+    iterations: int = 0
+    restarts: int = 0
+    solve_time_ms: float = 0.0
+    method: str = "numeric"
+
+
+def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
+    """Position error (m), rotation angle (rad) and e = [p − p_t; log3(R R_tᵀ)] (world axes)."""
+    ep = T.translation - target.translation
+    eR = pin.log3(T.rotation @ target.rotation.T)
+    return math.hypot(*ep), math.hypot(*eR), np.concatenate([ep, eR])
+
+
+def wrap_angle(x: np.ndarray) -> np.ndarray:
+    """Angles wrapped to [−π, π)."""
+    return (x + math.pi) % _TWO_PI - math.pi
+
+
+def joint_distance(robot: RobotModel, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Per-joint |a − b| on the wire, continuous joints measured around the circle."""
+    d = np.abs(a - b)
+    if robot.has_continuous:
+        c = robot._cont_wire
+        d[c] = np.abs(wrap_angle(a[c] - b[c]))
+    return d
+
+
+class Search:
+    """State of one IK query: the verified solutions, the best iterate, the counts.
+
+    Parameters
+    ----------
+    problem
+        The validated query (robot, chain, target, seed, options and task rows).
+    accept
+        Optional predicate on a converged wire configuration; a rejected solution is dropped
+        and the search continues (e.g. collision-aware IK).
+    cancel
+        Optional event the loops check between iterations (attempts, compiled).
+    rng
+        Random generator for the restarts after the nearest samples (default: the chain's
+        fixed table in order, so answers are reproducible).
+    """
+
+    def __init__(
+        self,
+        problem: IKProblem,
+        *,
+        accept: Callable[[np.ndarray], bool] | None = None,
+        cancel: threading.Event | None = None,
+        rng: np.random.Generator | None = None,
+    ) -> None:
+        task, options = problem.task, problem.options
+        self.robot, self.ch, self.target = problem.robot, problem.chain, problem.target
+        self.q_seed = problem.seed
+        self.rows, self.sw = task.rows, task.sw
+        self.full_pose = task.full_pose
+        self.check_pos, self.check_rot = task.check_pos, task.check_rot
+        self.tol_p, self.tol_r = float(options.tolerance[0]), float(options.tolerance[1])
+        self.accept = accept
+        self.cancel = cancel
+        self.rng = rng
+        self.wanted = options.num_solutions
+        self.solutions: list[IKSolution] = []
+        self.iterations = 0
+        self.restarts = 0
+        self.timed_out = False
+        self.nearest: np.ndarray | None = None
+        self.distances: np.ndarray | None = None
+        self.nearest_one = 0  # index of the nearest table sample, once distances are known
+        # Best unconverged iterate (weighted task error energy).
+        self.best_energy = math.inf
+        self.best_q = problem.seed.copy()
+
+    # --------------------------------------------------------------- verification
+    def done(self) -> bool:
+        return len(self.solutions) >= self.wanted
+
+    def wire(self, qa: np.ndarray) -> np.ndarray:
+        """Full wire configuration: the seed with the active joints replaced."""
+        q = self.q_seed.copy()
+        q[self.ch.active] = qa
+        return q
+
+    def offer(self, qa: np.ndarray) -> bool:
+        """Verify a candidate (active joints) by FK, limits and ``accept``; keep if new."""
+        robot = self.robot
+        q = self.wire(qa)
+        if robot.has_continuous:
+            c = robot._cont_wire
+            q[c] = wrap_angle(q[c])
+        if (q < robot.lower).any() or (q > robot.upper).any():
+            return False
+        model, data = robot.model, robot.data
+        pin.forwardKinematics(model, data, robot.to_pin(q))
+        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        target = self.target
+        dp = T.translation - target.translation
+        phi = pin.log3(T.rotation @ target.rotation.T)
+        ep2, er2 = float(dp @ dp), float(phi @ phi)
+        # hypot: no overflow of the squares (the errors of huge robots stay numbers)
+        ep_full, er_full = math.hypot(*dp), math.hypot(*phi)
+        if self.full_pose:
+            ep, er, energy = ep_full, er_full, ep2 + er2
+        else:
+            e = np.concatenate((dp, phi))
+            ep, er = self._checked(e)
+            energy = self._energy(e)
+        if energy < self.best_energy:
+            self.best_energy, self.best_q = energy, q
+        if not (ep <= self.tol_p and er <= self.tol_r):
+            return False
+        if not (math.isfinite(ep_full) and math.isfinite(er_full)):
+            return False  # a pose that overflows float64 (even on unchecked components)
+        for s in self.solutions:
+            if joint_distance(robot, s.q, q).max() <= DISTINCT:
+                return False
+        if self.accept is not None and not self.accept(q):
+            return False
+        self.solutions.append(IKSolution(q, ep_full, er_full))
+        return True
+
+    def _checked(self, e: np.ndarray) -> tuple[float, float]:
+        """Position and orientation errors over the checked (positive-weight) rows."""
+        r = self.rows
+        ep = float(np.linalg.norm(e[r[r < 3]])) if self.check_pos else 0.0
+        er = float(np.linalg.norm(e[r[r >= 3]])) if self.check_rot else 0.0
+        return ep, er
+
+    def _energy(self, e: np.ndarray) -> float:
+        v = e[self.rows]
+        if self.sw is not None:
+            v = v * self.sw
+        return float(v @ v)
+
+    def out_of_budget(self, iterations: int, cap: int, deadline: float) -> bool:
+        """Whether the loop must stop before another iteration (attempt, compiled): the
+        iteration cap is reached, or the deadline (``time.perf_counter``) has passed (then
+        ``timed_out`` is set). Raises :class:`Cancelled` once ``cancel`` is set."""
+        if iterations >= cap:
+            return True
+        if time.perf_counter() >= deadline:
+            self.timed_out = True
+            return True
+        if self.cancel is not None and self.cancel.is_set():
+            raise Cancelled()
+        return False
+
+    # --------------------------------------------------------------------- restarts
+    def seed_is_far(self, ep2: float, trace: float) -> bool:
+        """Whether the nearest table sample's pose is much closer to the target than the
+        seed's (distance ratio below :data:`NEAREST_RATIO`): then the loop jumps there at once.
+
+        ``ep2`` is ‖p − p_t‖² at the seed and ``trace`` tr(R R_tᵀ), so that the seed's
+        distance is ‖p − p_t‖² + c‖R − R_t‖²_F = ep2 + 2c(3 − trace). Ranks the table (kept
+        for :meth:`restart`).
+        """
+        d, k_t, i = self.ch.sample_distances_argmin(self.target)
+        self.distances, self.nearest_one = d, i
+        d_seed = ep2 + (2.0 * ROT_WEIGHT) * (3.0 - trace)
+        return d[i] + k_t < NEAREST_RATIO * d_seed
+
+    def restart(self) -> np.ndarray:
+        """The next restart configuration of the active joints.
+
+        The first ``NEAREST`` restarts start from the samples of the chain's table whose
+        pose is nearest the target (full pose only); then uniform random jumps (TRAC-IK):
+        drawn from ``rng`` when given, else the table in order.
+        """
+        self.restarts += 1
+        ch = self.ch
+        i = self.restarts - 1
+        if self.full_pose and NEAREST > 0:
+            if self.distances is None:
+                self.distances, _, self.nearest_one = ch.sample_distances_argmin(self.target)
+            if i == 0:  # the nearest sample alone: no need to rank the others yet
+                return ch.restart_table[self.nearest_one]
+            if self.nearest is None:
+                self.nearest = k_smallest(self.distances, NEAREST)
+            if i < len(self.nearest):
+                return ch.restart_table[self.nearest[i]]
+        rng = self.rng
+        if rng is None:
+            return ch.restart_table[i % TABLE]
+        return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * rng.random(ch.k)
+
+    # ------------------------------------------------------------------- result
+    def result(self, method: str, t_start: float) -> IKResult:
+        """The outcome: verified solutions sorted by distance to the seed, or the best iterate."""
+        robot = self.robot
+        sols = self.solutions
+        if len(sols) > 1:
+            sols = sorted(
+                sols, key=lambda s: float(np.linalg.norm(joint_distance(robot, s.q, self.q_seed)))
+            )
+        elapsed = (time.perf_counter() - t_start) * 1e3
+        if sols:
+            best = sols[0]
+            return IKResult(
+                True,
+                "converged",
+                best.q,
+                best.position_error,
+                best.orientation_error,
+                sols,
+                self.iterations,
+                self.restarts,
+                elapsed,
+                method,
+            )
+        q = self.best_q
+        if robot.has_continuous:
+            c = robot._cont_wire
+            q = q.copy()
+            q[c] = wrap_angle(q[c])
+        model, data = robot.model, robot.data
+        pin.forwardKinematics(model, data, robot.to_pin(q))
+        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        ep, er, _ = pose_errors(T, self.target)
+        if not (math.isfinite(ep) and math.isfinite(er)):
+            # The pose itself overflows float64 (a robot hundreds of orders of magnitude too
+            # big): there is no error to report, so no answer rather than a null one.
+            raise InvalidInputError(
+                f"frame {self.ch.frame!r} has no finite pose at the configurations searched: "
+                "the robot's dimensions overflow double precision",
+                "robot_id",
+            )
+        status: Status = "timeout" if self.timed_out else "not_converged"
+        return IKResult(
+            False, status, q, ep, er, [], self.iterations, self.restarts, elapsed, method
+        )
