@@ -234,7 +234,7 @@ def encode(doc: Any, raw_surrogates: bool = False) -> bytes:
     return text.encode("utf-8", "surrogatepass")
 
 
-def problem(api: TestClient, robot: str, endpoint: str, body: bytes) -> str | None:
+def answer_fault(api: TestClient, robot: str, endpoint: str, body: bytes) -> str | None:
     """What is wrong with the answer to ``body`` (a 5xx, or a 4xx that is no problem+json)."""
     r = api.post(
         f"/robots/{robot}/{endpoint}", content=body, headers={"content-type": "application/json"}
@@ -249,7 +249,7 @@ def problem(api: TestClient, robot: str, endpoint: str, body: bytes) -> str | No
 
 
 def check(api: TestClient, robot: str, endpoint: str, body: bytes) -> None:
-    wrong = problem(api, robot, endpoint, body)
+    wrong = answer_fault(api, robot, endpoint, body)
     assert wrong is None, wrong
 
 
@@ -294,7 +294,7 @@ def test_every_hostile_token_as_the_body_and_as_each_field(api, endpoint: str) -
     for i in range(len(RAW_TOKENS)):
         mark = _MARK.format(i)
         for doc in (mark, *({**body, key: mark} for key in body)):
-            wrong.append(problem(api, "ur5", endpoint, encode(doc)))
+            wrong.append(answer_fault(api, "ur5", endpoint, encode(doc)))
     wrong = [w for w in wrong if w]
     assert not wrong, "\n".join(wrong)
 
