@@ -31,14 +31,10 @@ from app.api.common import (
 from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
 from app.api.security import require_token
+from app.documents.dh import MAX_DH_DOCUMENT_BYTES, MalformedDocumentError, parse_dh_document
 from app.kinematics.collision import collision_link_pairs
 from app.kinematics.models import RobotModel
-from app.registry import (
-    MAX_DH_DOCUMENT_BYTES,
-    MalformedDocumentError,
-    Registry,
-    parse_dh_document,
-)
+from app.registry import Registry
 from app.store import ID_PATTERN
 
 router = APIRouter(prefix="/robots", tags=["robots"])
