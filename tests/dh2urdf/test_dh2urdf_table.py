@@ -1,4 +1,4 @@
-"""dh2urdf.table: parsing, unit conversion, defaults and every kind of bad input."""
+"""dh2urdf.table, loaders and parse: units, defaults and every kind of bad input."""
 
 from __future__ import annotations
 
@@ -10,13 +10,9 @@ from typing import Any
 
 import pytest
 
-from dh2urdf.table import (
-    DEFAULT_GEOMETRY_RADIUS,
-    DHError,
-    DHTable,
-    Transform,
-    format_for_path,
-)
+from dh2urdf.errors import DHError
+from dh2urdf.loaders import format_for_path
+from dh2urdf.table import DEFAULT_GEOMETRY_RADIUS, DHTable, Transform
 
 
 def base_doc() -> dict[str, Any]:
