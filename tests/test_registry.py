@@ -170,6 +170,17 @@ def test_conflicts_and_deletes(tmp_path: Path) -> None:
         reg.delete("small")
 
 
+def test_import_dh_refuses_more_than_64_rows_and_stores_nothing(tmp_path: Path) -> None:
+    """A table built in Python (not through parse_dh_document) meets the same row limit."""
+    reg = Registry(tmp_path)
+    row = {"a": 0.1, "alpha": 0.0, "d": 0.0, "theta": 0.0}
+    table = DHTable.from_dict({**SMALL, "joints": [dict(row) for _ in range(65)]})
+    with pytest.raises(InvalidInputError) as err:
+        reg.import_dh(table)
+    assert err.value.field == "joints" and "at most 64 rows, got 65" in err.value.message
+    assert not reg.exists("small")
+
+
 def test_two_workers_share_the_data_directory(tmp_path: Path) -> None:
     a, b = Registry(tmp_path), Registry(tmp_path)
     assert "small" not in b.ids()  # b has looked at the (empty) directory
