@@ -41,8 +41,7 @@ def robot(*joints: str, links: str = "base l1 l2", extra: str = "") -> str:
 J1, J2 = joint("j1", "base", "l1"), joint("j2", "l1", "l2", axis="0 1 0")
 GOOD = robot(J1, J2)
 SRDF = '<robot name="r"><disable_collisions link1="base" link2="l2" reason="Never"/></robot>'
-MESH = '<link name="m"><visual><geometry><mesh filename="{}"/></geometry></visual></link>'
-MIMIC = '<mimic joint="j1"/>'
+MESH = '<link name="l2"><visual><geometry><mesh filename="{}"/></geometry></visual></link>'
 
 
 def refused(urdf: str, reason: str, *, srdf: str | None = None, field: str = "urdf", **kw):
@@ -55,6 +54,9 @@ def refused(urdf: str, reason: str, *, srdf: str | None = None, field: str = "ur
 
 def test_the_base_documents_are_accepted() -> None:
     check_documents(GOOD, SRDF, UrdfLimits())
+    check_documents(
+        GOOD.replace('<link name="l2"/>', MESH.format("package://p/m.stl")), None, UrdfLimits()
+    )
     assert build_checked_model("r", GOOD, source="upload", srdf=SRDF).n == 2
 
 
@@ -98,6 +100,10 @@ J3 = joint("j3", "l1", "l2")
     ("urdf", "reason"),
     [
         (GOOD.replace("robot", "robt"), "the root element must be <robot>, got <robt>"),
+        (
+            GOOD.replace('<link name="l2"/>', MESH.format("/etc/passwd")),
+            "<mesh filename='/etc/passwd'> refused: plain paths are not allowed",
+        ),
         (GOOD.replace('xyz="0 0 0.5"', 'xyz="x 0 0.5"', 1), "not a list of numbers"),
         (GOOD.replace('xyz="0 0 0.5"', 'xyz="nan 0 0.5"', 1), "numbers must be finite"),
         (GOOD.replace('xyz="0 1 0"', 'xyz="0 1"'), "expected 3 numbers, got 2"),
