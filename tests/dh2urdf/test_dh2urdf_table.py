@@ -345,6 +345,21 @@ BAD_INPUTS = [
     ("tool rpy element", _set("tool.rpy", [0, "x", 0]), "tool.rpy[1]: expected a number..."),
     ("tool not a mapping", _set("tool", [0, 0, 1]), "tool: expected a mapping..."),
     ("description not a string", _set("description", 5), "description: expected a string..."),
+    (
+        "description too long",
+        _set("description", "x" * 1001),
+        "description: longer than 1000 characters",
+    ),
+    (
+        "lone surrogate in a key",
+        _set("joints[0].\ud800", 1),
+        "joints[0]: keys must be valid Unicode text (a lone surrogate is not)",
+    ),
+    (
+        "lone surrogate in a value",
+        _set("joints[0].name", "j\udc00"),
+        "joints[0].name: must be valid Unicode text (a lone UTF-16 surrogate is not)",
+    ),
 ]
 
 
