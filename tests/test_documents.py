@@ -186,6 +186,25 @@ def test_at_most_64_rows(fmt: str) -> None:
 
 
 @pytest.mark.parametrize(
+    ("raised", "kind", "field", "reason"),
+    [
+        (RecursionError(), MalformedDocumentError, "body", "invalid YAML: nested too deeply"),
+        (TypeError("odd value"), InvalidInputError, "body", "not a valid DH table (odd value)"),
+    ],
+)
+def test_unexpected_errors_inside_dh2urdf_are_4xx(monkeypatch, raised, kind, field, reason):
+    """Whatever dh2urdf misses (a recursion, a type it did not expect) is a 4xx, not a 500."""
+
+    def boom(*_a, **_k):
+        raise raised
+
+    monkeypatch.setattr(dh.DHTable, "from_text", boom)
+    with pytest.raises(kind) as err:
+        parse_dh_document("name: t\n", "yaml")
+    assert err.value.field == field and err.value.message == reason
+
+
+@pytest.mark.parametrize(
     ("uri", "ok"),
     [
         ("package://example-robot-data/robots/ur_description/meshes/base.stl", True),

@@ -408,7 +408,9 @@ def test_bad_yaml(text: str, expected: str) -> None:
         ('{"name": "x",}', "invalid JSON: line 1, column 14: "),
         ('{"name": "x", "name": "y"}', "invalid JSON: duplicate key 'name'"),
         ("[1, 2]", "expected a mapping (YAML/JSON object), got list"),
+        ("[" * 100_000 + "]" * 100_000, "invalid JSON: nested too deeply"),
     ],
+    ids=["trailing comma", "duplicate key", "list", "deep nesting"],
 )
 def test_bad_json(text: str, expected: str) -> None:
     with pytest.raises(DHError) as info:
