@@ -393,6 +393,7 @@ def test_document_must_be_a_mapping(value: Any) -> None:
         ("- 1\n- 2\n", "expected a mapping (YAML/JSON object), got list"),
         ("", "expected a mapping (YAML/JSON object), got NoneType"),
         ("name: x\n\tconvention: standard\n", "invalid YAML: "),
+        ("name: x\n1: 2\n", "keys must be strings, got int (1)"),
     ],
 )
 def test_bad_yaml(text: str, expected: str) -> None:
