@@ -187,6 +187,17 @@ def _check_joint(joint: Element, name: str, jtype: str, field: str) -> None:
             )
 
 
+def _new_name(element: Element, seen: set[str], field: str) -> str:
+    """The ``name`` of a ``<link>`` or ``<joint>``, added to ``seen``; missing or taken: 422."""
+    name = element.get("name")
+    if not name:
+        raise InvalidInputError(f"a <{element.tag}> has no name", field)
+    if name in seen:
+        raise InvalidInputError(f"{element.tag} {name!r} is defined twice", field)
+    seen.add(name)
+    return name
+
+
 def check_urdf_document(
     root: Element, field: str = "urdf", limits: UrdfLimits | None = None
 ) -> None:
@@ -209,12 +220,7 @@ def check_urdf_document(
 
     links: set[str] = set()
     for link in root.findall("link"):
-        name = link.get("name")
-        if not name:
-            raise InvalidInputError("a <link> has no name", field)
-        if name in links:
-            raise InvalidInputError(f"link {name!r} is defined twice", field)
-        links.add(name)
+        _new_name(link, links, field)
     if not links:
         raise InvalidInputError("the URDF has no <link>", field)
 
@@ -234,12 +240,7 @@ def check_urdf_document(
     parent_of: dict[str, str] = {}
     actuated = 0
     for joint in joints:
-        name = joint.get("name")
-        if not name:
-            raise InvalidInputError("a <joint> has no name", field)
-        if name in names:
-            raise InvalidInputError(f"joint {name!r} is defined twice", field)
-        names.add(name)
+        name = _new_name(joint, names, field)
         jtype = joint.get("type")
         if jtype not in URDF_JOINT_TYPES:
             raise InvalidInputError(
