@@ -27,6 +27,7 @@ from starlette.middleware.cors import CORSMiddleware
 from app import api, openapi
 from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
+from app.documents.urdf import UrdfLimits
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import procwatch
 from app.kinematics.ik.compiled import warm_up as warm_up_ik
@@ -34,7 +35,7 @@ from app.kinematics.xmldoc import XmlLimits
 from app.logs import configure_logging
 from app.methods import MethodsMiddleware
 from app.observability import ObservabilityMiddleware
-from app.registry import Registry, UrdfLimits
+from app.registry import Registry
 from app.settings import Settings, get_settings
 from app.store import remove_stale_temporaries
 

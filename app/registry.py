@@ -1,15 +1,13 @@
-"""Where robots come from: the built-in catalog, the built-in DH tables, the robots users add.
+"""Where robots come from: the built-in robots and the robots users add, by id.
 
 The registry knows every robot id without parsing any URDF (start-up stays fast); a robot's
 model is built on first use and cached. Sources:
 
-- ``example-robot-data``: the entries of ``robots/example_robot_data.yaml``; files are located
-  through the installed package's metadata (6.x ships no Python loader), and the package's
-  ``share`` directory is given to Pinocchio so ``package://`` mesh URIs resolve.
-- ``dh`` (built in): the tables of ``robots/dh/*.yaml``, turned into URDF by :mod:`dh2urdf`
-  on first use; the default end effector is the ``tool`` frame.
+- ``example-robot-data`` and ``dh`` (built in): the catalog and DH tables of
+  :mod:`app.catalog`.
 - ``dh`` and ``upload`` (user-added): robots imported from a DH table or uploaded as URDF,
-  kept in the data directory by :class:`app.store.RobotStore`.
+  checked by :mod:`app.documents` and kept in the data directory by
+  :class:`app.store.RobotStore`.
 
 Several processes may serve the same data directory: the directory is the source of truth.
 Before a cached user-added robot is served, :meth:`RobotStore.token` (one ``stat`` and one
@@ -20,18 +18,15 @@ robots never change and need no check.
 
 from __future__ import annotations
 
-import importlib.metadata
 import logging
 import threading
-from collections.abc import Iterable
-from dataclasses import dataclass
-from functools import cached_property, lru_cache
 from pathlib import Path
-from typing import Any, Literal
 
 import yaml
 
-import robots
+from app.catalog import DH_EE_FRAME, erd_share_dir, load_catalog, load_dh_builtins
+from app.documents.dh import MAX_DH_JOINTS, dh_error
+from app.documents.urdf import UrdfLimits, build_checked_model, check_documents
 from app.kinematics.errors import (
     ConflictError,
     ForbiddenError,
@@ -41,7 +36,6 @@ from app.kinematics.errors import (
 )
 from app.kinematics.models import RobotModel, RobotSummary
 from app.kinematics.text import check_text
-from app.kinematics.xmldoc import parse_literal_xml
 from app.store import (
     SRDF_FILE,
     TABLE_FILE,
@@ -50,284 +44,17 @@ from app.store import (
     StoredRobot,
     check_robot_id,
 )
-from app.urdf_checks import (
-    URDF_JOINT_TYPES,
-    UrdfLimits,
-    check_resource_uri,
-    check_srdf_document,
-    check_urdf_document,
-)
 from dh2urdf import DHError, DHTable, to_urdf
-
-__all__ = [
-    "URDF_JOINT_TYPES",
-    "Registry",
-    "UrdfLimits",
-    "check_resource_uri",
-    "check_srdf_document",
-    "check_urdf_document",
-    "parse_dh_document",
-]
 
 log = logging.getLogger("denavit.registry")
 
-#: Default end effector of every DH robot (the TCP frame dh2urdf generates).
-DH_EE_FRAME = "tool"
 #: Ids no robot may take: /robots/dh and /robots/urdf are the import routes.
 RESERVED_IDS = frozenset({"dh", "urdf"})
-#: Most rows a user-supplied DH table may have.
-MAX_DH_JOINTS = 64
-#: Largest DH table document (bytes): tables are small, and YAML parsing is slow.
-MAX_DH_DOCUMENT_BYTES = 256 * 1024
-#: Deepest nesting a DH document may have (a table needs 3 levels).
-MAX_DOCUMENT_DEPTH = 16
-#: Most YAML parse events a DH document may have (64 rows of 10 fields need ~1,400).
-MAX_YAML_EVENTS = 20_000
-
-
-@lru_cache
-def erd_share_dir() -> Path:
-    """The ``share`` directory holding ``example-robot-data/robots`` (from package metadata)."""
-    dist = importlib.metadata.distribution("example-robot-data")
-    marker = "share/example-robot-data/robots/"
-    for f in dist.files or ():
-        text = str(f).replace("\\", "/")
-        if marker in text:
-            prefix = text[: text.index(marker) + len("share")]
-            return Path(dist.locate_file(prefix)).resolve()
-    raise RuntimeError("example-robot-data is installed but ships no robots directory")
-
-
-@dataclass(frozen=True)
-class CatalogEntry:
-    """One example-robot-data robot of the catalog."""
-
-    id: str
-    name: str
-    urdf: str
-    joints: int
-    ee_frame: str
-    srdf: str | None = None
-    description: str = ""
-
-    @property
-    def urdf_path(self) -> Path:
-        return erd_share_dir() / "example-robot-data" / "robots" / self.urdf
-
-    @property
-    def srdf_path(self) -> Path | None:
-        return erd_share_dir() / "example-robot-data" / "robots" / self.srdf if self.srdf else None
-
-    def summary(self) -> RobotSummary:
-        return RobotSummary(self.id, self.name, "example-robot-data", self.joints, self.description)
-
-    def build(self) -> RobotModel:
-        srdf = self.srdf_path
-        return RobotModel(
-            self.id,
-            self.urdf_path.read_text(),
-            name=self.name,
-            source="example-robot-data",
-            package_dirs=[str(erd_share_dir())],
-            srdf_text=srdf.read_text() if srdf else None,
-            ee_frame=self.ee_frame,
-            description=self.description,
-        )
-
-
-def load_catalog(path: Path = robots.CATALOG_FILE) -> dict[str, CatalogEntry]:
-    """The example-robot-data catalog entries by id."""
-    doc = yaml.safe_load(path.read_text())
-    return {e["id"]: CatalogEntry(**e) for e in doc["robots"]}
-
-
-class DHEntry:
-    """One built-in DH robot (``robots/dh/<id>.yaml``).
-
-    The summary reads the YAML only (number of rows, description); the table is validated
-    and converted to URDF when the model is first needed.
-    """
-
-    def __init__(self, robot_id: str, path: Path) -> None:
-        self.id = robot_id
-        self.path = path
-
-    @cached_property
-    def _doc(self) -> dict[str, Any]:
-        doc = yaml.safe_load(self.path.read_text(encoding="utf-8"))
-        return doc if isinstance(doc, dict) else {}
-
-    def summary(self) -> RobotSummary:
-        joints = self._doc.get("joints")
-        return RobotSummary(
-            self.id,
-            self.id,
-            "dh",
-            len(joints) if isinstance(joints, list) else 0,
-            str(self._doc.get("description") or ""),
-        )
-
-    @cached_property
-    def table(self) -> DHTable:
-        return DHTable.from_file(self.path)
-
-    def build(self) -> RobotModel:
-        table = self.table
-        return RobotModel(
-            self.id,
-            to_urdf(table),
-            name=self.id,
-            source="dh",
-            ee_frame=DH_EE_FRAME,
-            description=table.description,
-        )
-
-
-def load_dh_builtins(exclude: Iterable[str] = ()) -> dict[str, DHEntry]:
-    """The built-in DH robots by id (file stem), skipping ids in ``exclude``."""
-    taken = set(exclude)
-    return {rid: DHEntry(rid, path) for rid, path in robots.dh_tables().items() if rid not in taken}
-
-
-# ---------------------------------------------------------------------- DH documents
-def dh_field(path: str | None, prefix: str = "") -> str:
-    """A dh2urdf field path (``joints[2].lower``) in the API's dotted form (``joints.2.lower``)."""
-    dotted = (path or "").replace("[", ".").replace("]", "").strip(".")
-    if prefix:
-        return f"{prefix}.{dotted}" if dotted else prefix
-    return dotted or "body"
-
-
-def dh_error(exc: DHError, prefix: str = "") -> InvalidInputError:
-    """The core error (HTTP 422) for a dh2urdf validation error, naming the field."""
-    return InvalidInputError(exc.reason, dh_field(exc.field, prefix))
-
-
-class MalformedDocumentError(InvalidInputError):
-    """The document is not JSON or YAML at all (the API answers 400)."""
-
-
-def _max_bracket_depth(text: str) -> int:
-    """Deepest nesting of ``[``/``{`` in ``text`` (quotes ignored: an upper bound)."""
-    depth = deepest = 0
-    for char in text:
-        if char in "[{":
-            depth += 1
-            deepest = max(deepest, depth)
-        elif char in "]}" and depth:
-            depth -= 1
-    return deepest
-
-
-def _screen_yaml(text: str) -> None:
-    """Cheap checks before the (pure-Python, slow) table parser sees a YAML document.
-
-    PyYAML's scanner is quadratic in flow nesting depth and a DH table is small and
-    shallow, so the document is refused when it nests deeper than
-    :data:`MAX_DOCUMENT_DEPTH`, has more than :data:`MAX_YAML_EVENTS` parse events (read with
-    libyaml when available), or uses aliases (``*name``, which let a small body expand
-    enormously).
-    """
-    if _max_bracket_depth(text) > MAX_DOCUMENT_DEPTH:
-        raise MalformedDocumentError(
-            f"invalid YAML: nested deeper than {MAX_DOCUMENT_DEPTH} levels", "body"
-        )
-    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-    depth = events = 0
-    try:
-        for event in yaml.parse(text, Loader=loader):
-            events += 1
-            if isinstance(event, yaml.AliasEvent):
-                line = event.start_mark.line + 1 if event.start_mark else "?"
-                raise InvalidInputError(
-                    f"YAML aliases are not accepted (alias *{event.anchor} on line {line}); "
-                    "write the values out",
-                    "body",
-                )
-            if isinstance(event, yaml.CollectionStartEvent):
-                depth += 1
-                if depth > MAX_DOCUMENT_DEPTH:
-                    raise MalformedDocumentError(
-                        f"invalid YAML: nested deeper than {MAX_DOCUMENT_DEPTH} levels", "body"
-                    )
-            elif isinstance(event, yaml.CollectionEndEvent):
-                depth -= 1
-            if events > MAX_YAML_EVENTS:
-                raise InvalidInputError(
-                    f"too many YAML values for a DH table (more than {MAX_YAML_EVENTS})", "body"
-                )
-    except yaml.YAMLError:
-        return  # syntax errors are reported by the table parser, with their position
-    except RecursionError:
-        raise MalformedDocumentError("invalid YAML: nested too deeply", "body") from None
-
-
-def parse_dh_document(text: str, fmt: Literal["json", "yaml"]) -> DHTable:
-    """Validate a DH table document (JSON or YAML text) and convert it to SI.
-
-    Raises
-    ------
-    MalformedDocumentError
-        The text is not JSON/YAML (or uses YAML aliases, or nests absurdly deep).
-    InvalidInputError
-        A field is wrong; ``field`` is its dotted path (``joints.2.lower``).
-    """
-    if fmt == "yaml":
-        _screen_yaml(text)
-    try:
-        table = DHTable.from_text(text, fmt)
-    except DHError as exc:
-        if exc.field is None and exc.reason.startswith(("invalid JSON", "invalid YAML")):
-            raise MalformedDocumentError(exc.reason, "body") from None
-        raise dh_error(exc) from None
-    except RecursionError:
-        raise MalformedDocumentError(f"invalid {fmt.upper()}: nested too deeply", "body") from None
-    except (TypeError, KeyError, AttributeError) as exc:  # a value of a type dh2urdf missed
-        log.warning("dh2urdf raised %r instead of DHError", exc)
-        raise InvalidInputError(f"not a valid DH table ({exc})", "body") from None
-    if table.dof > MAX_DH_JOINTS:
-        raise InvalidInputError(f"at most {MAX_DH_JOINTS} rows, got {table.dof}", "joints")
-    return table
 
 
 def table_yaml(table: DHTable) -> bytes:
     """The stored form of a table: its SI document (``DHTable.to_dict``) as YAML."""
     return yaml.safe_dump(table.to_dict(), sort_keys=False, allow_unicode=True).encode()
-
-
-# ---------------------------------------------------------------------- URDF uploads
-def build_checked_model(
-    robot_id: str,
-    urdf: str,
-    *,
-    source: str,
-    srdf: str | None = None,
-    ee_frame: str | None = None,
-    description: str = "",
-    package_dirs: Iterable[str] = (),
-    urdf_field: str = "urdf",
-) -> RobotModel:
-    """A :class:`RobotModel` from text a client sent; every failure is an InvalidInputError."""
-    try:
-        robot = RobotModel(
-            robot_id,
-            urdf,
-            name=robot_id,
-            source=source,
-            package_dirs=list(package_dirs),
-            srdf_text=srdf,
-            ee_frame=ee_frame,
-            description=description,
-        )
-    except UnknownNameError as exc:
-        raise InvalidInputError(exc.message, "ee_frame") from None
-    except (ValueError, RuntimeError, IndexError, KeyError, TypeError) as exc:
-        raise InvalidInputError(f"Pinocchio rejected the URDF ({exc})", urdf_field) from None
-    if robot.n == 0:
-        raise InvalidInputError(
-            "the URDF has no actuated joint (revolute, continuous or prismatic)", urdf_field
-        )
-    return robot
 
 
 # ---------------------------------------------------------------------- the registry
@@ -459,17 +186,6 @@ class Registry:
             self._user_models = {**self._user_models, robot_id: (stored.revision, robot)}
         return robot
 
-    def check_documents(self, urdf: str, srdf: str | None) -> None:
-        """The upload checks of a URDF (and its SRDF) within :attr:`limits`: parsed with
-        literal names as Pinocchio reads them, no DTD or entities, bounded work
-        (:func:`check_urdf_document`, :func:`check_srdf_document`); raises
-        :class:`InvalidInputError` naming ``urdf`` or ``srdf``."""
-        root = parse_literal_xml(urdf, "urdf", self.limits.xml)
-        check_urdf_document(root, "urdf", self.limits)
-        if srdf is not None:
-            links = {link.get("name", "") for link in root.findall("link")}
-            check_srdf_document(srdf, links, "srdf", self.limits.xml)
-
     def _build_stored(self, stored: StoredRobot) -> RobotModel:
         """The model of a stored robot; a record that cannot be served is a 409 naming it.
 
@@ -484,7 +200,7 @@ class Registry:
             if urdf is None:  # deleted by another process since the listing
                 raise UnknownNameError("robot", stored.id, "robot_id", self.ids())
             srdf = stored.read_text(SRDF_FILE)
-            self.check_documents(urdf, srdf)
+            check_documents(urdf, srdf, self.limits)
             meta = stored.meta
             return RobotModel(
                 stored.id,
@@ -623,13 +339,13 @@ class Registry:
 
         The XML is parsed with literal names as Pinocchio reads it, without DTD, entities or
         external references and within :attr:`limits`, and checked
-        (:func:`check_urdf_document`) before Pinocchio sees it.
+        (:func:`app.documents.urdf.check_documents`) before Pinocchio sees it.
         """
         store = self._writable(robot_id, "name")
         check_text(description, "description")
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
-        self.check_documents(urdf, srdf)
+        check_documents(urdf, srdf, self.limits)
         robot = build_checked_model(
             robot_id,
             urdf,

@@ -15,7 +15,9 @@ from pathlib import Path
 from typing import NoReturn
 
 # Import submodules, not the package: works even where ``dh2urdf`` resolves as a namespace.
-from dh2urdf.table import DHError, DHTable, format_for_path
+from dh2urdf.errors import DHError
+from dh2urdf.loaders import format_for_path
+from dh2urdf.table import DHTable
 from dh2urdf.urdf import to_urdf
 
 __all__ = ["main", "EXIT_OK", "EXIT_OUTPUT_ERROR", "EXIT_INPUT_ERROR"]

@@ -24,14 +24,10 @@ from app.api.offload import offload
 from app.api.responses import ORJSONResponse
 from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
+from app.documents.dh import MAX_DH_DOCUMENT_BYTES, MalformedDocumentError, parse_dh_document
 from app.kinematics.collision_pairs import collision_link_pairs
 from app.kinematics.models import RobotModel
-from app.registry import (
-    MAX_DH_DOCUMENT_BYTES,
-    MalformedDocumentError,
-    Registry,
-    parse_dh_document,
-)
+from app.registry import Registry
 from app.store import ID_PATTERN
 
 router = APIRouter(prefix="/robots", tags=["robots"])

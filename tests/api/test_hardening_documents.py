@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
+from app.catalog import erd_share_dir
 from app.kinematics.errors import InvalidInputError
 from app.main import create_app
-from app.registry import erd_share_dir
 from app.scenes import SceneStore
 from app.settings import Settings
 from tests.helpers import problem, serve

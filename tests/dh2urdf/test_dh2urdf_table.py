@@ -1,4 +1,4 @@
-"""dh2urdf.table: parsing, unit conversion, defaults and every kind of bad input."""
+"""dh2urdf.table, loaders and parse: units, defaults and every kind of bad input."""
 
 from __future__ import annotations
 
@@ -10,13 +10,9 @@ from typing import Any
 
 import pytest
 
-from dh2urdf.table import (
-    DEFAULT_GEOMETRY_RADIUS,
-    DHError,
-    DHTable,
-    Transform,
-    format_for_path,
-)
+from dh2urdf.errors import DHError
+from dh2urdf.loaders import format_for_path
+from dh2urdf.table import DEFAULT_GEOMETRY_RADIUS, DHTable, Transform
 
 
 def base_doc() -> dict[str, Any]:
@@ -349,6 +345,21 @@ BAD_INPUTS = [
     ("tool rpy element", _set("tool.rpy", [0, "x", 0]), "tool.rpy[1]: expected a number..."),
     ("tool not a mapping", _set("tool", [0, 0, 1]), "tool: expected a mapping..."),
     ("description not a string", _set("description", 5), "description: expected a string..."),
+    (
+        "description too long",
+        _set("description", "x" * 1001),
+        "description: longer than 1000 characters",
+    ),
+    (
+        "lone surrogate in a key",
+        _set("joints[0].\ud800", 1),
+        "joints[0]: keys must be valid Unicode text (a lone surrogate is not)",
+    ),
+    (
+        "lone surrogate in a value",
+        _set("joints[0].name", "j\udc00"),
+        "joints[0].name: must be valid Unicode text (a lone UTF-16 surrogate is not)",
+    ),
 ]
 
 
@@ -382,6 +393,7 @@ def test_document_must_be_a_mapping(value: Any) -> None:
         ("- 1\n- 2\n", "expected a mapping (YAML/JSON object), got list"),
         ("", "expected a mapping (YAML/JSON object), got NoneType"),
         ("name: x\n\tconvention: standard\n", "invalid YAML: "),
+        ("name: x\n1: 2\n", "keys must be strings, got int (1)"),
     ],
 )
 def test_bad_yaml(text: str, expected: str) -> None:
@@ -397,7 +409,9 @@ def test_bad_yaml(text: str, expected: str) -> None:
         ('{"name": "x",}', "invalid JSON: line 1, column 14: "),
         ('{"name": "x", "name": "y"}', "invalid JSON: duplicate key 'name'"),
         ("[1, 2]", "expected a mapping (YAML/JSON object), got list"),
+        ("[" * 100_000 + "]" * 100_000, "invalid JSON: nested too deeply"),
     ],
+    ids=["trailing comma", "duplicate key", "list", "deep nesting"],
 )
 def test_bad_json(text: str, expected: str) -> None:
     with pytest.raises(DHError) as info:

@@ -1,4 +1,4 @@
-"""Checks of client-supplied URDF and SRDF, made on the document as Pinocchio will read it.
+"""Checks of client-supplied URDF, made on the document as Pinocchio will read it.
 
 The XML is parsed by :func:`app.kinematics.xmldoc.parse_literal_xml`: no DTD or entities,
 bounded work, and element/attribute names kept literally (namespace-unaware, like urdfdom's
@@ -9,11 +9,13 @@ as it is for Pinocchio, and a namespace trick cannot hide an element from a chec
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from xml.etree.ElementTree import Element
 
-from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import MAX_JOINT_VALUE
+from app.documents.srdf import check_srdf_document
+from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
 #: Joint types a URDF upload may use (the wire has one value per actuated joint).
@@ -185,6 +187,17 @@ def _check_joint(joint: Element, name: str, jtype: str, field: str) -> None:
             )
 
 
+def _new_name(element: Element, seen: set[str], field: str) -> str:
+    """The ``name`` of a ``<link>`` or ``<joint>``, added to ``seen``; missing or taken: 422."""
+    name = element.get("name")
+    if not name:
+        raise InvalidInputError(f"a <{element.tag}> has no name", field)
+    if name in seen:
+        raise InvalidInputError(f"{element.tag} {name!r} is defined twice", field)
+    seen.add(name)
+    return name
+
+
 def check_urdf_document(
     root: Element, field: str = "urdf", limits: UrdfLimits | None = None
 ) -> None:
@@ -207,12 +220,7 @@ def check_urdf_document(
 
     links: set[str] = set()
     for link in root.findall("link"):
-        name = link.get("name")
-        if not name:
-            raise InvalidInputError("a <link> has no name", field)
-        if name in links:
-            raise InvalidInputError(f"link {name!r} is defined twice", field)
-        links.add(name)
+        _new_name(link, links, field)
     if not links:
         raise InvalidInputError("the URDF has no <link>", field)
 
@@ -232,12 +240,7 @@ def check_urdf_document(
     parent_of: dict[str, str] = {}
     actuated = 0
     for joint in joints:
-        name = joint.get("name")
-        if not name:
-            raise InvalidInputError("a <joint> has no name", field)
-        if name in names:
-            raise InvalidInputError(f"joint {name!r} is defined twice", field)
-        names.add(name)
+        name = _new_name(joint, names, field)
         jtype = joint.get("type")
         if jtype not in URDF_JOINT_TYPES:
             raise InvalidInputError(
@@ -290,17 +293,47 @@ def check_urdf_document(
         )
 
 
-def check_srdf_document(
-    text: str, links: set[str], field: str = "srdf", limits: XmlLimits | None = None
-) -> None:
-    """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs."""
-    root = parse_literal_xml(text, field, limits)
-    if root.tag != "robot":
-        raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
-    for pair in root.iter("disable_collisions"):
-        for attr in ("link1", "link2"):
-            link = pair.get(attr)
-            if link not in links:
-                raise InvalidInputError(
-                    f"<disable_collisions {attr}={link!r}>: no such link in the URDF", field
-                )
+def check_documents(urdf: str, srdf: str | None, limits: UrdfLimits) -> None:
+    """The upload checks of a URDF (and its SRDF) within ``limits``: parsed with
+    literal names as Pinocchio reads them, no DTD or entities, bounded work
+    (:func:`check_urdf_document`, :func:`~app.documents.srdf.check_srdf_document`); raises
+    :class:`InvalidInputError` naming ``urdf`` or ``srdf``."""
+    root = parse_literal_xml(urdf, "urdf", limits.xml)
+    check_urdf_document(root, "urdf", limits)
+    if srdf is not None:
+        links = {link.get("name", "") for link in root.findall("link")}
+        check_srdf_document(srdf, links, "srdf", limits.xml)
+
+
+def build_checked_model(
+    robot_id: str,
+    urdf: str,
+    *,
+    source: str,
+    srdf: str | None = None,
+    ee_frame: str | None = None,
+    description: str = "",
+    package_dirs: Iterable[str] = (),
+    urdf_field: str = "urdf",
+) -> RobotModel:
+    """A :class:`RobotModel` from text a client sent; every failure is an InvalidInputError."""
+    try:
+        robot = RobotModel(
+            robot_id,
+            urdf,
+            name=robot_id,
+            source=source,
+            package_dirs=list(package_dirs),
+            srdf_text=srdf,
+            ee_frame=ee_frame,
+            description=description,
+        )
+    except UnknownNameError as exc:
+        raise InvalidInputError(exc.message, "ee_frame") from None
+    except (ValueError, RuntimeError, IndexError, KeyError, TypeError) as exc:
+        raise InvalidInputError(f"Pinocchio rejected the URDF ({exc})", urdf_field) from None
+    if robot.n == 0:
+        raise InvalidInputError(
+            "the URDF has no actuated joint (revolute, continuous or prismatic)", urdf_field
+        )
+    return robot
