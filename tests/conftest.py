@@ -7,10 +7,16 @@ from pathlib import Path
 
 import pytest
 from fastapi.testclient import TestClient
+from hypothesis import settings as hypothesis_settings
 
 from app.main import create_app
 from app.registry import Registry
 from app.settings import Settings
+
+# Property tests draw the same examples on every run (a fixed seed per test) and keep no
+# example database: a run never depends on what an earlier run found.
+hypothesis_settings.register_profile("deterministic", derandomize=True, database=None)
+hypothesis_settings.load_profile("deterministic")
 
 
 @pytest.fixture
