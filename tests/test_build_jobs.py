@@ -17,9 +17,8 @@ from app.kinematics.errors import ConflictError, UnavailableError, UnknownNameEr
 from app.kinematics.models import RobotModel
 from app.kinematics.reachability.build import build_map
 from app.kinematics.reachability.map import ReachabilityMap, summarize
-from app.kinematics.reachability.spec import make_spec
 from app.maps import MapStore
-from tests.kinematics.chains import planar_2link
+from tests.kinematics.chains import planar_2link, planar_map_spec
 
 ROBOT = "planar2_test"
 
@@ -27,19 +26,6 @@ ROBOT = "planar2_test"
 @pytest.fixture(scope="module")
 def planar() -> RobotModel:
     return RobotModel(ROBOT, planar_2link(0.9, 0.6, name=ROBOT), ee_frame="tip")
-
-
-def planar_spec(robot, **kw):
-    args = dict(
-        voxel_size=0.05,
-        lower=[-1.6, -1.6, -0.025],
-        upper=[1.6, 1.6, 0.025],
-        orientation_divisions=0,
-        rows=["vx", "vy"],
-        samples=60_000,
-    )
-    args.update(kw)
-    return make_spec(robot, "tip", **args)
 
 
 class FakeClock:
@@ -96,7 +82,7 @@ def insert_row(root, job_id, status="running", heartbeat=None, created=None, rob
 
 def test_jobs_of_one_worker_are_seen_by_another(tmp_path, planar):
     a, b = two_workers(tmp_path)
-    job = a.submit(planar, planar_spec(planar))
+    job = a.submit(planar, planar_map_spec(planar))
     seen = b.get(ROBOT, job.job_id)
     assert isinstance(seen, JobSnapshot) and seen.job_id == job.job_id
     assert seen.status in ("queued", "running", "done")
@@ -127,7 +113,7 @@ def test_cancel_through_another_worker(tmp_path, planar):
     """B cancels A's queued job at once and A's running build within moments; both end
     cancelled on both views and nothing is stored."""
     a, b = two_workers(tmp_path)
-    spec = planar_spec(planar, samples=200_000_000)
+    spec = planar_map_spec(planar, samples=200_000_000)
     running = a.submit(planar, spec)
     queued = a.submit(planar, spec)
     wait_for(b, running.job_id, lambda j: j.to_json()["progress"]["samples_done"])
@@ -148,7 +134,7 @@ def test_cancel_through_another_worker(tmp_path, planar):
 
 def test_own_cancel_and_a_finished_job_of_another_worker_conflicts(tmp_path, planar):
     a, b = two_workers(tmp_path)
-    job = a.submit(planar, planar_spec(planar, samples=2048))
+    job = a.submit(planar, planar_map_spec(planar, samples=2048))
     wait_for(a, job.job_id)
     with pytest.raises(ConflictError) as e:
         b.cancel(ROBOT, job.job_id)
@@ -156,7 +142,7 @@ def test_own_cancel_and_a_finished_job_of_another_worker_conflicts(tmp_path, pla
     with pytest.raises(ConflictError):
         a.cancel(ROBOT, job.job_id)
     # A cancels its own running job; B reads the row
-    long = a.submit(planar, planar_spec(planar, samples=200_000_000))
+    long = a.submit(planar, planar_map_spec(planar, samples=200_000_000))
     wait_for(a, long.job_id, lambda j: j.status == "running")
     a.cancel(ROBOT, long.job_id)
     assert wait_for(b, long.job_id).status == "cancelled"
@@ -169,7 +155,7 @@ def test_stale_heartbeat_marks_the_job_failed(tmp_path, planar):
     clock_a, clock_b = FakeClock(), FakeClock()
     a = BuildJobs(MapStore(tmp_path), processes=1, clock=clock_a)
     b = BuildJobs(MapStore(tmp_path), processes=1, clock=clock_b)
-    job = a.submit(planar, planar_spec(planar, samples=200_000_000))
+    job = a.submit(planar, planar_map_spec(planar, samples=200_000_000))
     wait_for(b, job.job_id, lambda j: j.to_json()["progress"]["samples_done"])
     clock_b.t += STALE_SECONDS  # at the threshold: still alive
     assert b.get(ROBOT, job.job_id).status == "running"
@@ -189,7 +175,7 @@ def test_stale_heartbeat_marks_the_job_failed(tmp_path, planar):
     assert wait_for(a, job.job_id).status == "failed"
     assert job.error == OWNER_GONE and job.progress.cancel.is_set()
     # builds run one after another: the next one finishing proves the long one stopped
-    nxt = a.submit(planar, planar_spec(planar, samples=2048))
+    nxt = a.submit(planar, planar_map_spec(planar, samples=2048))
     assert wait_for(a, nxt.job_id).status == "done"
     assert job.status == "failed" and rows(tmp_path)[job.job_id]["status"] == "failed"
     assert [m["map_id"] for m in a.store.list(ROBOT)] == [nxt.map_id]
@@ -225,7 +211,7 @@ def test_old_finished_rows_are_deleted(tmp_path, planar):
     insert_row(tmp_path, active, created=1.0)  # oldest of all, but running
     ids = []
     for _ in range(4):
-        job = a.submit(planar, planar_spec(planar, samples=2048))
+        job = a.submit(planar, planar_map_spec(planar, samples=2048))
         ids.append(job.job_id)
         wait_for(a, job.job_id)
     # at the 4th submit, 3 were finished: the oldest went; the 4th finished since
@@ -251,7 +237,7 @@ def test_unusable_database_is_a_clear_error(tmp_path, planar, damage):
         lambda: jobs.list(ROBOT),
         lambda: jobs.get(ROBOT, "a" * 32),
         lambda: jobs.cancel(ROBOT, "a" * 32),
-        lambda: jobs.submit(planar, planar_spec(planar, samples=2048)),
+        lambda: jobs.submit(planar, planar_map_spec(planar, samples=2048)),
     ):
         with pytest.raises(UnavailableError) as e:
             call()
@@ -261,12 +247,12 @@ def test_unusable_database_is_a_clear_error(tmp_path, planar, damage):
         path.unlink()
     else:
         path.rmdir()
-    job = jobs.submit(planar, planar_spec(planar, samples=2048))
+    job = jobs.submit(planar, planar_map_spec(planar, samples=2048))
     assert wait_for(jobs, job.job_id).status == "done"
 
 
 def test_store_roundtrip(tmp_path, planar):
-    spec = planar_spec(planar, samples=2048)
+    spec = planar_map_spec(planar, samples=2048)
     best = build_map(planar, spec)
     meta = {
         "map_id": "0" * 32,

@@ -13,7 +13,7 @@ import time
 import httpx
 import pytest
 
-from tests.helpers import serve
+from tests.helpers import Server, serve
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="walks /proc for the process tree"
@@ -78,26 +78,15 @@ def cmdline(pid: int) -> str:
         return ""
 
 
-def server_pid(url: str) -> int:
-    """The pid of the ``uvicorn`` process started by tests.helpers.serve for ``url``."""
-    port = url.rsplit(":", 1)[1]
-    for name in os.listdir("/proc"):
-        if name.isdigit() and f"--port {port} " in cmdline(int(name)) + " ":
-            if "uvicorn" in cmdline(int(name)):
-                return int(name)
-    raise AssertionError(f"no uvicorn process for {url}")
-
-
-def start_long_build(url: str) -> tuple[int, set[int]]:
+def start_long_build(server: Server) -> tuple[int, set[int]]:
     """Post :data:`LONG_BUILD`; once its build processes run, the pid of the worker that owns
     the job (the server process, or the worker with a forkserver child whose build processes
     run) and that worker's descendants (forkserver, build processes...)."""
-    r = httpx.post(url + BASE, json=LONG_BUILD, timeout=30)
+    r = httpx.post(server.url + BASE, json=LONG_BUILD, timeout=30)
     assert r.status_code == 202, r.text
     end = time.monotonic() + 120
     while True:
-        server = server_pid(url)
-        tree = {server} | descendants(server)
+        tree = {server.proc.pid} | descendants(server.proc.pid)
         for owner in sorted(tree):
             forkservers = [p for p in tree if "forkserver" in cmdline(p) and parent(p) == owner]
             if forkservers and descendants(forkservers[0]):
@@ -126,9 +115,9 @@ def test_killing_the_build_owner_leaves_no_process(tmp_path, workers) -> None:
     data = tmp_path / "data"
     args = ("--workers", "2") if workers == 2 else ()
     with serve(data, *args) as server:
-        url = server.url
-        owner, tree = start_long_build(url)
-        assert owner == server_pid(url) if workers == 1 else owner in descendants(server_pid(url))
+        url, pid = server.url, server.proc.pid
+        owner, tree = start_long_build(server)
+        assert owner == pid if workers == 1 else owner in descendants(pid)
         os.kill(owner, signal.SIGKILL)
         left = wait_gone(tree)
         kill_all(left)
@@ -140,9 +129,8 @@ def test_killing_the_build_owner_leaves_no_process(tmp_path, workers) -> None:
 def test_killing_the_supervisor_leaves_no_process(tmp_path) -> None:
     data = tmp_path / "data"
     with serve(data, "--workers", "2") as server:
-        url = server.url
-        master = server_pid(url)
-        start_long_build(url)
+        master = server.proc.pid
+        start_long_build(server)
         tree = descendants(master)
         assert len(tree) >= 4  # 2 workers, a forkserver, build processes
         os.kill(master, signal.SIGKILL)

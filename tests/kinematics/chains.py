@@ -1,8 +1,13 @@
-"""Small hand-written URDF chains with known closed forms (independent of dh2urdf)."""
+"""Small hand-written URDF chains with known closed forms (independent of dh2urdf), and
+the reachability map spec of the planar ones."""
 
 from __future__ import annotations
 
 import math
+from typing import Any
+
+from app.kinematics.models import RobotModel
+from app.kinematics.reachability.spec import MapSpec, make_spec
 
 
 def planar_2link(
@@ -116,6 +121,21 @@ def planar2_urdf(
     return planar_2link(
         l1, l2, base_xyz=base_xyz, base_rpy=base_rpy, limit=limit, name="planar2_test"
     )
+
+
+def planar_map_spec(robot: RobotModel, **kw: Any) -> MapSpec:
+    """A reachability map of a planar arm's ``tip`` over its plane: 5 cm voxels one layer
+    thick around z = 0, position only (rows vx, vy), 60 000 samples; ``kw`` overrides."""
+    args: dict[str, Any] = dict(
+        voxel_size=0.05,
+        lower=[-1.6, -1.6, -0.025],
+        upper=[1.6, 1.6, 0.025],
+        orientation_divisions=0,
+        rows=["vx", "vy"],
+        samples=60_000,
+    )
+    args.update(kw)
+    return make_spec(robot, "tip", **args)
 
 
 #: A planar 2R arm with box collision geometry: folded back, link 2 enters the base box.

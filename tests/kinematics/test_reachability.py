@@ -33,25 +33,12 @@ from app.kinematics.reachability.build import (
 from app.kinematics.reachability.map import ReachabilityMap, summarize
 from app.kinematics.reachability.spec import default_bounds, make_spec
 from app.kinematics.rotations import matrix_to_quaternion, quaternion_to_matrix
-from tests.kinematics.chains import COLLIDING_URDF, L1, L2, planar2_urdf
+from tests.kinematics.chains import COLLIDING_URDF, L1, L2, planar2_urdf, planar_map_spec
 
 
 @pytest.fixture(scope="module")
 def planar() -> RobotModel:
     return RobotModel("planar2_test", planar2_urdf(), ee_frame="tip")
-
-
-def planar_spec(robot, **kw):
-    args = dict(
-        voxel_size=0.05,
-        lower=[-1.6, -1.6, -0.025],
-        upper=[1.6, 1.6, 0.025],
-        orientation_divisions=0,
-        rows=["vx", "vy"],
-        samples=60_000,
-    )
-    args.update(kw)
-    return make_spec(robot, "tip", **args)
 
 
 # ------------------------------------------------------------------------ Yoshikawa
@@ -125,7 +112,7 @@ def voxel_centres(spec):
 
 
 def test_planar_map_is_the_annulus(planar):
-    spec = planar_spec(planar)
+    spec = planar_map_spec(planar)
     best = build_map(planar, spec)
     m = ReachabilityMap({"spec": spec.__dict__.copy(), **summarize(best)}, best)
     c = voxel_centres(spec)
@@ -151,7 +138,7 @@ def test_planar_exact_manipulability_at_sampled_cells(planar):
     """Each sample's cell and value against the closed form: the tip at
     (l1·c1 + l2·c12, l1·s1 + l2·s12, 0) lands in voxel ⌊(p − lower)/s⌋ with value
     l1·l2·|sin θ2| (float32), sample by sample (one orientation bin, all in the box)."""
-    spec = planar_spec(planar, samples=4096)
+    spec = planar_map_spec(planar, samples=4096)
     cells, vals = MapBuilder(planar, spec).cells(0, 4096)
     Q = chunk_samples(spec, 0, 4096)
     t1, t2 = Q[:, 0], Q[:, 1]
@@ -168,7 +155,7 @@ def test_planar_exact_manipulability_at_sampled_cells(planar):
 
 
 def test_grid_sampling_lattice(planar):
-    spec = planar_spec(planar, sampling="grid", samples=100)
+    spec = planar_map_spec(planar, sampling="grid", samples=100)
     assert spec.grid_per_joint == 10 and spec.samples == 100
     Q = chunk_samples(spec, 0, spec.samples)
     # a full turn (±π) has no duplicate end point
@@ -176,19 +163,19 @@ def test_grid_sampling_lattice(planar):
     np.testing.assert_allclose(np.unique(Q[:, 0]), grid)
     np.testing.assert_allclose(np.unique(Q[:, 1]), grid)
     short = RobotModel("p2", planar2_urdf(limit=2.0), ee_frame="tip")
-    Q = chunk_samples(planar_spec(short, sampling="grid", samples=36), 0, 36)
+    Q = chunk_samples(planar_map_spec(short, sampling="grid", samples=36), 0, 36)
     np.testing.assert_allclose(np.unique(Q[:, 1]), np.linspace(-2.0, 2.0, 6))
 
 
 def test_processes_give_the_same_map(planar):
-    spec = planar_spec(planar, samples=3 * 32_768, orientation_divisions=2)
+    spec = planar_map_spec(planar, samples=3 * 32_768, orientation_divisions=2)
     one = build_map(planar, spec)
     two = build_map(planar, spec, processes=2, min_samples_per_process=1)
     assert np.array_equal(one, two)
 
 
 def test_cancel(planar):
-    spec = planar_spec(planar, samples=10_000_000)
+    spec = planar_map_spec(planar, samples=10_000_000)
     progress = Progress(spec.samples)
     progress.cancel.set()
     with pytest.raises(Cancelled):
@@ -222,7 +209,7 @@ def test_default_bounds_contain_the_workspace(registry):
 )
 def test_bad_specs(planar, kw, field):
     with pytest.raises(InvalidInputError) as e:
-        planar_spec(planar, **kw)
+        planar_map_spec(planar, **kw)
     assert e.value.field == field
 
 
@@ -260,7 +247,7 @@ def test_worker_failure_is_reported(planar):
     """A worker that cannot build its model fails the build with the worker's error."""
     broken = RobotModel("planar2_test", planar2_urdf(), ee_frame="tip")
     broken.urdf_text = "<robot name='x'><link name='a'/></robot>"  # no frame 'tip' there
-    spec = planar_spec(broken, samples=4 * 32_768)
+    spec = planar_map_spec(broken, samples=4 * 32_768)
     with pytest.raises(RuntimeError, match="build process failed"):
         build_map(broken, spec, processes=2, min_samples_per_process=1)
 
@@ -268,7 +255,7 @@ def test_worker_failure_is_reported(planar):
 def test_pinocchio_fallback_gives_the_same_map(planar, monkeypatch):
     """Chains the vectorised path cannot take (mimic, multi-DoF joints) use Pinocchio per
     sample: forcing that path must give the same map."""
-    spec = planar_spec(planar, samples=8192, orientation_divisions=3)
+    spec = planar_map_spec(planar, samples=8192, orientation_divisions=3)
     fast = build_map(planar, spec)
     monkeypatch.setattr(SerialChain, "build", classmethod(lambda cls, robot, frame: None))
     assert isinstance(MapBuilder(planar, spec).chain, PinocchioChain)
