@@ -21,11 +21,6 @@ import orjson
 REQUEST_ID: ContextVar[str | None] = ContextVar("denavit_request_id", default=None)
 
 
-def current_request_id() -> str | None:
-    """The id of the request being handled, or ``None``."""
-    return REQUEST_ID.get()
-
-
 _RECORD_FIELDS = frozenset(vars(logging.makeLogRecord({}))) | {
     "message",
     "asctime",

@@ -130,10 +130,6 @@ class IKChain:
         d += W2
         return d, k_t, int(d.argmin())
 
-    def nearest_samples(self, target: pin.SE3, k: int) -> np.ndarray:
-        """Indices of the k table samples nearest ``target``, nearest first."""
-        return k_smallest(self.sample_distances(target)[0], k)
-
 
 def ik_chain(robot: RobotModel, frame: str) -> IKChain:
     """The cached :class:`IKChain` of ``frame`` (raises UnknownNameError for a bad frame)."""
