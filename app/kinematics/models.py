@@ -26,6 +26,8 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
+from app.kinematics.tip import bare_links, default_tip
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
@@ -195,7 +197,8 @@ class RobotModel:
     srdf_text
         Optional SRDF (disabled collision pairs), used by the collision module.
     ee_frame
-        Default end-effector frame; when ``None``, the deepest link of the chain.
+        Default end-effector frame; when ``None``, the tip of the longest serial chain that
+        is not a gripper finger (:func:`app.kinematics.tip.default_tip`).
     """
 
     def __init__(
@@ -262,6 +265,13 @@ class RobotModel:
         self.joint_names = [j.name for j in self.joints]
         self._joint_index = {j.name: j.index for j in self.joints}
         self.n = len(self.joints)
+        #: Mimic followers (not configuration entries; :mod:`app.kinematics.mimic`).
+        self.mimic_joints: list[MimicJoint] = mimic_joints(
+            self.model,
+            {j.pin_id: j.index for j in self.joints},
+            {name: d.get("type") or "" for name, d in urdf_joints.items()},
+        )
+        self._mimic_by_name = {m.name: m for m in self.mimic_joints}
 
         cont = np.array([j.continuous for j in self.joints], dtype=bool)
         self._cont_mask = cont
@@ -292,19 +302,19 @@ class RobotModel:
             self.frames.append(Frame(fname, _FRAME_KIND[f.type], fid, pj))
         self._frame_ids = best
         self.frame_names = [f.name for f in self.frames]
-        self.ee_frame = ee_frame if ee_frame is not None else self._deepest_link()
+        self.ee_frame = ee_frame if ee_frame is not None else self._default_tip()
         self.frame_id(self.ee_frame, field="ee_frame")
 
     # ------------------------------------------------------------------ frames and joints
-    def _deepest_link(self) -> str:
-        """The link with the most joints between it and the root (last one on ties)."""
-        depth = {0: 0}
-        for jid in range(1, self.model.njoints):
-            depth[jid] = depth[self.model.parents[jid]] + 1
+    def _default_tip(self) -> str:
+        """The tip of the longest serial chain that is not a gripper finger (see
+        :mod:`app.kinematics.tip`)."""
         links = [f for f in self.frames if f.kind == "link"] or self.frames
-        return max(
-            links, key=lambda f: (depth[self.model.frames[f.pin_id].parentJoint], f.pin_id)
-        ).name
+        bare = bare_links(self.urdf_text)
+        fid = default_tip(
+            self.model, [f.pin_id for f in links], [f.pin_id for f in links if f.name in bare]
+        )
+        return self.model.frames[fid].name
 
     def frame_id(self, name: str, field: str = "frame") -> int:
         """Pinocchio frame id of ``name``; raises :class:`UnknownNameError`."""
@@ -318,12 +328,16 @@ class RobotModel:
         try:
             return self._joint_index[name]
         except KeyError:
-            raise UnknownNameError("joint", name, field, self.joint_names) from None
+            raise UnknownNameError(
+                "joint", name, field, self.joint_names + list(self._mimic_by_name)
+            ) from None
 
     def supporting_joints(self, frame: str) -> np.ndarray:
-        """Wire indices of the joints that move ``frame`` (its kinematic chain)."""
+        """Wire indices of the joints that move ``frame``, in wire order: its kinematic chain,
+        plus the leader of every mimic follower on it (the leader of the Panda's
+        ``panda_finger_joint2`` moves ``panda_rightfinger``; :func:`.mimic.with_leaders`)."""
         parent = self.model.frames[self.frame_id(frame)].parentJoint
-        support = set(self.model.supports[parent])
+        support = with_leaders(self.model.supports[parent], self.mimic_joints)
         return np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
 
     # --------------------------------------------------------------------- configurations
@@ -383,19 +397,15 @@ class RobotModel:
     ) -> np.ndarray:
         """A validated wire configuration from a list or a name → value map.
 
-        Joints missing from ``joint_positions`` take their neutral value. Giving both forms,
-        a list of the wrong length, or a value that is not finite or beyond
-        ±:data:`MAX_JOINT_VALUE` raises :class:`InvalidInputError` naming the value
-        (``q.3``, ``joint_positions.<name>``).
+        Joints missing from ``joint_positions`` take their neutral value; the map may name
+        mimic followers too (:meth:`apply_joint_map`). Giving both forms, a list of the wrong
+        length, or a value that is not finite or beyond ±:data:`MAX_JOINT_VALUE` raises
+        :class:`InvalidInputError` naming the value (``q.3``, ``joint_positions.<name>``).
         """
         if q is not None and joint_positions is not None:
             raise InvalidInputError(f"give either {field} or {map_field}, not both", field)
         if q is None:
-            out = self.neutral()
-            for name, value in (joint_positions or {}).items():
-                idx = self.joint_index(name, field=f"{map_field}.{name}")
-                out[idx] = check_joint_value(value, f"{map_field}.{name}")
-            return out
+            return self.apply_joint_map(self.neutral(), joint_positions or {}, map_field)
         arr = np.asarray(q, dtype=float)
         if arr.ndim != 1 or arr.shape[0] != self.n:
             raise InvalidInputError(
@@ -405,6 +415,28 @@ class RobotModel:
             )
         check_joint_values(arr, field)
         return arr
+
+    def apply_joint_map(
+        self, out: np.ndarray, values: Mapping[str, float], field: str
+    ) -> np.ndarray:
+        """Set ``out`` (a wire configuration, changed in place and returned) from a joint
+        name → value map (rad or m), as a ROS ``JointState`` gives it.
+
+        The map may name mimic followers: a follower's value is not set but checked against
+        ``multiplier × leader + offset``, the leader's value being the one this map gives,
+        or ``out``'s when the map does not name the leader (:func:`.mimic.check_followers`,
+        422 naming ``<field>.<follower>`` with the expected value). An unknown name raises
+        :class:`UnknownNameError` (``<field>.<name>``) with the closest joint names.
+        """
+        followers: dict[str, float] = {}
+        for name, value in values.items():
+            path = f"{field}.{name}"
+            if name in self._mimic_by_name:
+                followers[name] = check_joint_value(value, path)
+            else:
+                out[self.joint_index(name, field=path)] = check_joint_value(value, path)
+        check_followers(self._mimic_by_name, followers, out, field)
+        return out
 
     def limit_violations(self, q: np.ndarray, tol: float = 1e-12) -> list[str]:
         """Names of the joints whose value lies outside [lower, upper] (beyond ``tol``)."""

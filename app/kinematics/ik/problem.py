@@ -20,7 +20,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import MAX_POSITION, RobotModel, check_bounded, check_joint_value
+from app.kinematics.models import MAX_POSITION, RobotModel, check_bounded
 from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
 
 if TYPE_CHECKING:
@@ -221,14 +221,11 @@ def target_placement(
 def seed_configuration(
     robot: RobotModel, seed: Sequence[float] | np.ndarray | Mapping[str, float] | None
 ) -> np.ndarray:
-    """Wire seed from a list or a joint → value map (others: middle of their limits);
-    default the middle of the joint limits. Names ``seed``, ``seed.4``, ``seed.<joint>``."""
+    """Wire seed from a list or a joint → value map (others: middle of their limits; mimic
+    followers checked against their leader, :meth:`RobotModel.apply_joint_map`); default the
+    middle of the joint limits. Names ``seed``, ``seed.4``, ``seed.<joint>``."""
     if seed is None:
         return robot.mid_range()
     if isinstance(seed, Mapping):
-        out = robot.mid_range()
-        for name, value in seed.items():
-            idx = robot.joint_index(name, field=f"seed.{name}")
-            out[idx] = check_joint_value(value, f"seed.{name}")
-        return out
+        return robot.apply_joint_map(robot.mid_range(), seed, "seed")
     return robot.configuration(seed, field="seed")

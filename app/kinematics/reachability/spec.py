@@ -38,6 +38,7 @@ import pinocchio as pin
 
 from app.kinematics.analysis import support_columns, task_rows
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.mimic import follower_travel
 from app.kinematics.models import RobotModel
 from app.kinematics.reachability.bins import orientation_bins
 
@@ -95,10 +96,14 @@ def default_bounds(robot: RobotModel, frame: str) -> tuple[np.ndarray, np.ndarra
     reach = 0.0
     for jid in chain[1:]:
         reach += float(np.linalg.norm(model.jointPlacements[jid].translation))
+    mimics = {m.pin_id: m for m in robot.mimic_joints}
     for jid in chain:
         j = by_pin.get(jid)
         if j is not None and j.type == "prismatic":
             reach += max(abs(j.lower or 0.0), abs(j.upper or 0.0))
+        elif jid in mimics and mimics[jid].type == "prismatic":  # travel set by its leader
+            lead = robot.joints[mimics[jid].leader_index]
+            reach += follower_travel(mimics[jid], lead.lower, lead.upper)
     reach += float(np.linalg.norm(f.placement.translation))
     reach = reach * (1 + 1e-6) + 1e-6
     return center - reach, center + reach
