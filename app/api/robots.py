@@ -70,6 +70,16 @@ class JointOut(BaseModel):
     continuous: bool = Field(description="Unbounded revolute joint (one angle on the wire).")
 
 
+class MimicJointOut(BaseModel):
+    """A mimic joint: it follows its leader and is not a configuration entry."""
+
+    name: str
+    type: str = Field(description="revolute | prismatic | continuous (the URDF type).")
+    leader: str = Field(description="The actuated joint it follows.")
+    multiplier: float = Field(description="value = multiplier × value(leader) + offset.")
+    offset: float = Field(description="Offset (rad or m).")
+
+
 class FrameOut(BaseModel):
     """A named frame."""
 
@@ -86,8 +96,21 @@ class RobotDetail(BaseModel):
     source: str
     description: str
     joints: list[JointOut] = Field(description="Actuated joints in configuration order.")
+    mimic_joints: list[MimicJointOut] = Field(
+        description="Mimic joints (URDF <mimic>): not in configurations, moved by their "
+        "leader. A joint_positions or seed map may name them (a ROS JointState of the whole "
+        "robot) when the value is multiplier × leader + offset within 1e-9 (the leader's "
+        "value from the same map, else its default)."
+    )
     frames: list[FrameOut] = Field(description="Every named frame (links and fixed frames).")
-    end_effector: str = Field(description="Default frame of fk, jacobian and ik.")
+    end_effector: str = Field(
+        description="Default frame of fk, jacobian and ik: the catalog's choice, else the "
+        "SRDF end effector's parent link, else the tip of the longest serial chain that is "
+        "not a gripper finger (a finger: a link moved by one of at least two sibling "
+        "branches made only of prismatic and mimic joints; among links held by the same "
+        "joint, a link without geometry such as a TCP or tool0 first, then the farthest), "
+        "else the deepest link."
+    )
     neutral: list[float] = Field(description="Neutral configuration (0, clipped to limits).")
     has_collision_geometry: bool = Field(description="Whether the URDF has <collision>.")
     collision_pairs: list[list[str]] = Field(
@@ -200,6 +223,7 @@ def robot_detail(robot: RobotModel) -> dict[str, Any]:
         "source": robot.source,
         "description": robot.description,
         "joints": [robot.describe_joint(j) for j in robot.joints],
+        "mimic_joints": [m.describe() for m in robot.mimic_joints],
         "frames": [
             {"name": f.name, "kind": f.kind, "parent_joint": f.parent_joint} for f in robot.frames
         ],

@@ -67,7 +67,9 @@ class ConfigurationIn(Schema):
     )
     joint_positions: dict[str, JointValue] | None = Field(
         None,
-        description="Joint name → value (rad or m); joints not given take their neutral value.",
+        description="Joint name → value (rad or m); joints not given take their neutral value. "
+        "Mimic joints may be named (a ROS JointState as is): their value must equal "
+        "multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).",
         max_length=1024,
     )
 
