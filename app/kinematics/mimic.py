@@ -128,7 +128,8 @@ def check_followers(
             )
 
 
-def follower_travel(m: MimicJoint, lower: float | None, upper: float | None) -> float:
-    """Largest |value| (m or rad) a follower reaches while its leader spans [lower, upper]
-    (a missing limit taken as 0, as for an actuated joint's travel)."""
-    return max(abs(m.value(lower or 0.0)), abs(m.value(upper or 0.0)))
+def follower_travel(m: MimicJoint, lower: float | None, upper: float | None, at: float) -> float:
+    """Largest |value − value(at)| (m or rad) of a follower while its leader spans
+    [lower, upper] (a missing limit taken as 0): how far it moves from where it is when its
+    leader is at ``at``."""
+    return abs(m.multiplier) * max(abs((lower or 0.0) - at), abs((upper or 0.0) - at))

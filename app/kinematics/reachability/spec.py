@@ -88,7 +88,8 @@ def default_bounds(robot: RobotModel, frame: str) -> tuple[np.ndarray, np.ndarra
     chain = list(model.supports[f.parentJoint])[1:]
     by_pin = {j.pin_id: j for j in robot.joints}
     data = model.createData()
-    pin.forwardKinematics(model, data, robot.to_pin(robot.neutral()))
+    neutral = robot.neutral()
+    pin.forwardKinematics(model, data, robot.to_pin(neutral))
     if not chain:
         c = pin.updateFramePlacement(model, data, robot.frame_id(frame)).translation
         return c - 1e-3, c + 1e-3
@@ -102,8 +103,9 @@ def default_bounds(robot: RobotModel, frame: str) -> tuple[np.ndarray, np.ndarra
         if j is not None and j.type == "prismatic":
             reach += max(abs(j.lower or 0.0), abs(j.upper or 0.0))
         elif jid in mimics and mimics[jid].type == "prismatic":  # travel set by its leader
-            lead = robot.joints[mimics[jid].leader_index]
-            reach += follower_travel(mimics[jid], lead.lower, lead.upper)
+            m = mimics[jid]
+            lead = robot.joints[m.leader_index]
+            reach += follower_travel(m, lead.lower, lead.upper, neutral[m.leader_index])
     reach += float(np.linalg.norm(f.placement.translation))
     reach = reach * (1 + 1e-6) + 1e-6
     return center - reach, center + reach
