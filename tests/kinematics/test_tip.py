@@ -1,0 +1,115 @@
+"""The default tip of a robot given without ``ee_frame`` (app/kinematics/tip.py).
+
+The expected tips are read off the robots' drawings: the flange or TCP of the arm, never a
+gripper finger. Catalog robots are loaded from their URDF without the catalog's choice.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from app.kinematics.models import RobotModel
+
+BOX = '<visual><geometry><box size="0.01 0.01 0.01"/></geometry></visual>'
+
+
+def _robot(joints: list[tuple[str, str, str, str, str]], bare: set[str] = frozenset()) -> str:
+    """A URDF from (name, type, parent, child, extra XML) rows; links get a box visual unless
+    named in ``bare``."""
+    links = {"base"} | {j[3] for j in joints}
+    body = "".join(
+        f'<link name="{name}">{"" if name in bare else BOX}</link>' for name in sorted(links)
+    )
+    for name, jtype, parent, child, extra in joints:
+        limit = '<limit lower="-1" upper="1" velocity="1" effort="1"/>' if jtype != "fixed" else ""
+        body += (
+            f'<joint name="{name}" type="{jtype}"><parent link="{parent}"/>'
+            f'<child link="{child}"/><origin xyz="0 0 0.1"/><axis xyz="0 0 1"/>{limit}'
+            f"{extra}</joint>"
+        )
+    return f'<?xml version="1.0"?><robot name="t">{body}</robot>'
+
+
+ARM = [
+    ("a1", "revolute", "base", "l1", ""),
+    ("a2", "revolute", "l1", "l2", ""),
+    ("a3", "revolute", "l2", "l3", ""),
+    ("flange_joint", "fixed", "l3", "flange", ""),
+]
+
+
+def _tip(joints, bare=frozenset()) -> str:
+    return RobotModel("t", _robot(joints, set(bare))).ee_frame
+
+
+def test_two_independent_prismatic_jaws_are_fingers() -> None:
+    jaws = [
+        ("jaw_a", "prismatic", "flange", "jaw_left", ""),
+        ("jaw_b", "prismatic", "flange", "jaw_right", ""),
+    ]
+    assert _tip(ARM + jaws) == "flange"
+
+
+def test_mimic_finger_linkage_is_a_finger() -> None:
+    """A Robotiq-2F-like gripper: a revolute knuckle leading mimic followers, two levels."""
+    mimic = '<mimic joint="f_knuckle" multiplier="-1"/>'
+    gripper = [
+        ("f_knuckle", "revolute", "flange", "left_knuckle", ""),
+        ("f_left_tip", "revolute", "left_knuckle", "left_tip", mimic),
+        ("f_right_knuckle", "revolute", "flange", "right_knuckle", mimic),
+        ("f_right_tip", "revolute", "right_knuckle", "right_tip", mimic),
+    ]
+    assert _tip(ARM + gripper) == "flange"
+
+
+def test_tcp_marker_before_geometry_on_the_same_joint() -> None:
+    """Fixed fingers (Kinova-style) and a bare TCP frame on the last joint: the TCP."""
+    fixed = [
+        ("tcp_joint", "fixed", "flange", "tcp", ""),
+        ("finger_a", "fixed", "flange", "finger_a_link", ""),
+        ("finger_a_tip", "fixed", "finger_a_link", "finger_a_tip_link", ""),
+    ]
+    assert _tip(ARM + fixed, bare={"tcp"}) == "tcp"
+    # without a bare frame: the farthest link held by the last joint
+    assert _tip(ARM + fixed[1:]) == "finger_a_tip_link"
+
+
+def test_lone_prismatic_end_joint_is_not_a_finger() -> None:
+    """A linear axis at the end of the arm (no similar sibling) is part of the arm."""
+    assert _tip(ARM + [("slide", "prismatic", "flange", "carriage", "")]) == "carriage"
+
+
+def test_a_bare_gripper_falls_back_to_the_deepest_link() -> None:
+    jaws = [
+        ("jaw_a", "prismatic", "base", "jaw_left", ""),
+        ("jaw_b", "prismatic", "base", "jaw_right", ""),
+    ]
+    assert _tip(jaws) in {"jaw_left", "jaw_right"}
+
+
+@pytest.mark.parametrize(
+    ("robot_id", "expected"),
+    [
+        ("panda", {"panda_hand_tcp"}),
+        ("ur5", {"tool0"}),
+        ("ur10", {"tool0"}),
+        ("kinova", {"j2s6s200_end_effector"}),
+        ("xarm", {"link_eef"}),
+    ],
+)
+def test_catalog_urdfs_without_ee_frame(registry, robot_id: str, expected: set[str]) -> None:
+    robot = RobotModel("x", registry.get(robot_id).urdf_text)
+    assert robot.ee_frame in expected
+
+
+def test_panda_without_its_tcp_is_the_hand_or_flange(registry) -> None:
+    """The catalog Panda with the TCP link removed: still the hand or flange."""
+    text = registry.get("panda").urdf_text
+    for opening, closing in (
+        ('<joint name="panda_hand_tcp_joint"', "</joint>"),
+        ('<link name="panda_hand_tcp"', "</link>"),
+    ):
+        start = text.index(opening)
+        text = text[:start] + text[text.index(closing, start) + len(closing) :]
+    assert "panda_hand_tcp" not in text
+    assert RobotModel("x", text).ee_frame in {"panda_hand", "panda_link8"}
