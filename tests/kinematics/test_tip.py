@@ -6,8 +6,6 @@ gripper finger. Catalog robots are loaded from their URDF without the catalog's 
 
 from __future__ import annotations
 
-import pytest
-
 from app.kinematics.models import RobotModel
 
 BOX = '<visual><geometry><box size="0.01 0.01 0.01"/></geometry></visual>'
@@ -42,12 +40,18 @@ def _tip(joints, bare=frozenset()) -> str:
     return RobotModel("t", _robot(joints, set(bare))).ee_frame
 
 
-def test_two_independent_prismatic_jaws_are_fingers() -> None:
+def test_two_prismatic_jaws_are_fingers_one_slide_is_not() -> None:
+    """Two sibling prismatic jaws (no mimic) are a finger pair: the tip is the flange. A lone
+    prismatic joint at the end (a linear axis) is part of the arm, and a bare gripper (jaws
+    at the root, nothing else moving) falls back to the deepest link."""
     jaws = [
         ("jaw_a", "prismatic", "flange", "jaw_left", ""),
         ("jaw_b", "prismatic", "flange", "jaw_right", ""),
     ]
     assert _tip(ARM + jaws) == "flange"
+    assert _tip(ARM + jaws[:1]) == "jaw_left"
+    at_root = [(name, t, "base", child, x) for name, t, _, child, x in jaws]
+    assert _tip(at_root) in {"jaw_left", "jaw_right"}
 
 
 def test_mimic_finger_linkage_is_a_finger() -> None:
@@ -65,7 +69,7 @@ def test_mimic_finger_linkage_is_a_finger() -> None:
 def test_tcp_marker_before_geometry_on_the_same_joint() -> None:
     """Fixed fingers (Kinova-style) and a bare TCP frame on the last joint: the TCP."""
     fixed = [
-        ("tcp_joint", "fixed", "flange", "tcp", ""),
+        ("a_tcp_joint", "fixed", "flange", "tcp", ""),  # parsed first: not last on ties
         ("finger_a", "fixed", "flange", "finger_a_link", ""),
         ("finger_a_tip", "fixed", "finger_a_link", "finger_a_tip_link", ""),
     ]
@@ -74,32 +78,19 @@ def test_tcp_marker_before_geometry_on_the_same_joint() -> None:
     assert _tip(ARM + fixed[1:]) == "finger_a_tip_link"
 
 
-def test_lone_prismatic_end_joint_is_not_a_finger() -> None:
-    """A linear axis at the end of the arm (no similar sibling) is part of the arm."""
-    assert _tip(ARM + [("slide", "prismatic", "flange", "carriage", "")]) == "carriage"
+#: The tips of the catalog robots' own URDFs (the catalog names them; an upload does not).
+CATALOG_TIPS = {
+    "panda": "panda_hand_tcp",
+    "ur5": "tool0",
+    "ur10": "tool0",
+    "kinova": "j2s6s200_end_effector",
+    "xarm": "link_eef",
+}
 
 
-def test_a_bare_gripper_falls_back_to_the_deepest_link() -> None:
-    jaws = [
-        ("jaw_a", "prismatic", "base", "jaw_left", ""),
-        ("jaw_b", "prismatic", "base", "jaw_right", ""),
-    ]
-    assert _tip(jaws) in {"jaw_left", "jaw_right"}
-
-
-@pytest.mark.parametrize(
-    ("robot_id", "expected"),
-    [
-        ("panda", {"panda_hand_tcp"}),
-        ("ur5", {"tool0"}),
-        ("ur10", {"tool0"}),
-        ("kinova", {"j2s6s200_end_effector"}),
-        ("xarm", {"link_eef"}),
-    ],
-)
-def test_catalog_urdfs_without_ee_frame(registry, robot_id: str, expected: set[str]) -> None:
-    robot = RobotModel("x", registry.get(robot_id).urdf_text)
-    assert robot.ee_frame in expected
+def test_catalog_urdfs_without_ee_frame(registry) -> None:
+    tips = {rid: RobotModel("x", registry.get(rid).urdf_text).ee_frame for rid in CATALOG_TIPS}
+    assert tips == CATALOG_TIPS
 
 
 def test_panda_without_its_tcp_is_the_hand_or_flange(registry) -> None:
