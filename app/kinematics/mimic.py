@@ -104,6 +104,13 @@ def with_leaders(support: Iterable[int], mimics: Iterable[MimicJoint]) -> set[in
     return ids
 
 
+def has_followers(support: Iterable[int], mimics: Iterable[MimicJoint]) -> bool:
+    """Whether a mimic follower is among Pinocchio joint ids ``support``: the frame's chain
+    is then not a plain serial chain of its moving joints (no closed form applies)."""
+    ids = set(support)
+    return any(m.pin_id in ids for m in mimics)
+
+
 def check_followers(
     mimics: Mapping[str, MimicJoint], given: Mapping[str, float], q: np.ndarray, field: str
 ) -> None:

@@ -98,6 +98,21 @@ def test_planar_mimic_inverse_velocity_uses_the_leader(planar) -> None:
     np.testing.assert_allclose(res.joint_velocities, [0.7, -0.3], atol=1e-9)
 
 
+@pytest.mark.parametrize("mode", ["position", "pose"])
+def test_planar_mimic_ik_moves_the_leader_without_a_wrong_closed_form(planar, mode) -> None:
+    """The tip's moving joints (drive, j1) look like a planar 2R arm but are not one: no
+    closed form is tried, and the numeric solver reaches every target (yourdfpy-checked)."""
+    targets = random_configurations(planar, 50, seed=3)
+    seeds = random_configurations(planar, 50, seed=4)
+    options = IKOptions(frame="tip", mode=mode, timeout_ms=60_000.0, max_iterations=500)
+    for q_t, seed in zip(targets, seeds, strict=True):
+        T = reference_pose(planar, q_t, "tip")
+        res = ik.solve(planar, se3(T), options, seed=seed)
+        assert res.success and res.method == "numeric"
+        dp, dr = pose_error(reference_pose(planar, res.q, "tip"), T)
+        assert dp < 1e-5 and (mode == "position" or dr < 1e-5)
+
+
 def _fd_jacobian(robot: RobotModel, q: np.ndarray, frame: str, h: float = 1e-6) -> np.ndarray:
     """Central differences of yourdfpy FK (world-aligned twist) over every wire joint."""
     J = np.zeros((6, robot.n))

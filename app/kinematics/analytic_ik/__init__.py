@@ -10,6 +10,8 @@ closed form can only add answers, never wrong ones.
   :mod:`app.kinematics.analytic_ik.ur`, built on the Paden–Kahan subproblems of
   :mod:`app.kinematics.analytic_ik.subproblems`.
 
+A frame moved by a mimic follower has none (its moving joints are not its serial chain).
+
 This module detects which closed form a chain admits (:func:`prepare`) and returns its
 candidates (:func:`candidates`).
 """
@@ -36,6 +38,7 @@ from app.kinematics.analytic_ik.ur import (
     ur_solutions,
 )
 from app.kinematics.ik_kernel import available as _compiled_available
+from app.kinematics.mimic import has_followers
 from app.kinematics.models import RobotModel
 
 if TYPE_CHECKING:
@@ -51,6 +54,10 @@ def prepare(robot: RobotModel, ch: IKChain) -> tuple[URType | None, Planar2 | No
     """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
     for its argument types, so that no query's budget pays for either."""
     fid = ch.frame_id
+    if has_followers(robot.model.supports[robot.model.frames[fid].parentJoint], robot.mimic_joints):
+        # A mimic follower moves the frame: its chain is not the serial chain of ch.active.
+        ch.closed_form = (None, None)
+        return ch.closed_form
     forms = ch.closed_form = (
         ur_geometry(robot, ch.active, fid),
         planar2_geometry(robot, ch.active, fid),
