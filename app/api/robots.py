@@ -74,7 +74,7 @@ class MimicJointOut(BaseModel):
     """A mimic joint: it follows its leader and is not a configuration entry."""
 
     name: str
-    type: str = Field(description="revolute | prismatic | continuous (the URDF type).")
+    type: str = Field(description="revolute | prismatic (the URDF type).")
     leader: str = Field(description="The actuated joint it follows.")
     multiplier: float = Field(description="value = multiplier × value(leader) + offset.")
     offset: float = Field(description="Offset (rad or m).")

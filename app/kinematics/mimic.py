@@ -39,7 +39,7 @@ class MimicJoint:
     """One mimic follower: ``value = multiplier · value(leader) + offset`` (rad or m)."""
 
     name: str
-    type: str  # the URDF type of the follower: revolute | prismatic | continuous
+    type: str  # the URDF type of the follower: revolute | prismatic
     leader: str
     multiplier: float
     offset: float
