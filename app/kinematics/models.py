@@ -26,6 +26,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.semantics import parse_semantics
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
@@ -193,9 +194,11 @@ class RobotModel:
     package_dirs
         Directories ``package://`` mesh URIs resolve against.
     srdf_text
-        Optional SRDF (disabled collision pairs), used by the collision module.
+        Optional SRDF: disabled collision pairs (collision module), groups, end effectors
+        and named states (:attr:`semantics`, :mod:`app.kinematics.groups`).
     ee_frame
-        Default end-effector frame; when ``None``, the deepest link of the chain.
+        Default end-effector frame; when ``None``, the ``parent_link`` of the SRDF's first
+        ``<end_effector>``, else the deepest link of the chain.
     """
 
     def __init__(
@@ -223,6 +226,10 @@ class RobotModel:
         self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
 
         urdf_joints = parse_urdf_joints(urdf_text)
+        #: The URDF's joints (fixed and mimic included), name → description.
+        self.urdf_joints = urdf_joints
+        #: The SRDF's groups, end effectors and named states (empty without an SRDF).
+        self.semantics = parse_semantics(srdf_text)
         self.has_collision_geometry = "<collision" in urdf_text
         self.joints: list[Joint] = []
         for jid in range(1, self.model.njoints):
@@ -292,6 +299,9 @@ class RobotModel:
             self.frames.append(Frame(fname, _FRAME_KIND[f.type], fid, pj))
         self._frame_ids = best
         self.frame_names = [f.name for f in self.frames]
+        srdf_tip = self.semantics.default_tip()
+        if ee_frame is None and srdf_tip in self._frame_ids:
+            ee_frame = srdf_tip  # rule 1 of the default tip: the SRDF's end effector
         self.ee_frame = ee_frame if ee_frame is not None else self._deepest_link()
         self.frame_id(self.ee_frame, field="ee_frame")
 
