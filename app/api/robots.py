@@ -26,6 +26,7 @@ from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
 from app.documents.dh import MAX_DH_DOCUMENT_BYTES, MalformedDocumentError, parse_dh_document
 from app.kinematics.collision_pairs import collision_link_pairs
+from app.kinematics.groups import named_states, robot_groups
 from app.kinematics.models import RobotModel
 from app.registry import Registry
 from app.store import ID_PATTERN
@@ -78,6 +79,37 @@ class FrameOut(BaseModel):
     parent_joint: str | None = Field(description="The actuated joint that moves it, if any.")
 
 
+class GroupOut(BaseModel):
+    """A planning group of the SRDF, resolved against the model."""
+
+    name: str
+    joints: list[str] = Field(
+        description="Its configuration joints (actuated, no mimic followers), in joint order: "
+        "a `q` of this length is accepted with `group`."
+    )
+    tip: str = Field(
+        description="Its default frame: its chain's tip_link, else the parent_link of an end "
+        "effector attached to it, else its deepest link."
+    )
+
+
+class EndEffectorOut(BaseModel):
+    """An SRDF end effector: the tool group ``group`` attached at ``parent_link``."""
+
+    name: str
+    parent_link: str
+    group: str
+    parent_group: str | None
+
+
+class NamedStateOut(BaseModel):
+    """An SRDF group state: usable as an IK seed by name (``"seed": "ready"``)."""
+
+    name: str
+    group: str | None = Field(description="The group it is a state of (null if not given).")
+    joint_positions: dict[str, float] = Field(description="Joint → value (rad or m).")
+
+
 class RobotDetail(BaseModel):
     """Everything a client needs to talk about a robot."""
 
@@ -87,7 +119,13 @@ class RobotDetail(BaseModel):
     description: str
     joints: list[JointOut] = Field(description="Actuated joints in configuration order.")
     frames: list[FrameOut] = Field(description="Every named frame (links and fixed frames).")
-    end_effector: str = Field(description="Default frame of fk, jacobian and ik.")
+    end_effector: str = Field(
+        description="Default frame of fk, jacobian and ik (the default tip): the ee_frame given "
+        "at upload, else the parent_link of the SRDF's first end effector, else the deepest link."
+    )
+    groups: list[GroupOut] = Field(description="SRDF planning groups (`group` in requests).")
+    end_effectors: list[EndEffectorOut] = Field(description="SRDF end effectors.")
+    named_states: list[NamedStateOut] = Field(description="SRDF group states (IK seeds).")
     neutral: list[float] = Field(description="Neutral configuration (0, clipped to limits).")
     has_collision_geometry: bool = Field(description="Whether the URDF has <collision>.")
     collision_pairs: list[list[str]] = Field(
@@ -169,9 +207,16 @@ class UrdfUpload(Schema):
         "package://<package>/<path> URIs; only revolute, continuous, prismatic and fixed "
         "joints.",
     )
-    srdf: Text | None = Field(None, description="SRDF document (disabled collision pairs).")
+    srdf: Text | None = Field(
+        None,
+        description="SRDF document: disabled collision pairs, planning groups (chain, joints, "
+        "links, subgroups), end effectors and group states, checked against the URDF.",
+    )
     ee_frame: Text | None = Field(
-        None, max_length=256, description="Default end-effector frame (default: deepest link)."
+        None,
+        max_length=256,
+        description="Default end-effector frame (default: the parent_link of the SRDF's first "
+        "end effector, else the deepest link).",
     )
     description: Text = Field("", max_length=1000, description="Short description.")
 
@@ -204,6 +249,23 @@ def robot_detail(robot: RobotModel) -> dict[str, Any]:
             {"name": f.name, "kind": f.kind, "parent_joint": f.parent_joint} for f in robot.frames
         ],
         "end_effector": robot.ee_frame,
+        "groups": [
+            {"name": g.name, "joints": list(g.joints), "tip": g.tip}
+            for g in robot_groups(robot).values()
+        ],
+        "end_effectors": [
+            {
+                "name": e.name,
+                "parent_link": e.parent_link,
+                "group": e.group,
+                "parent_group": e.parent_group,
+            }
+            for e in robot.semantics.end_effectors
+        ],
+        "named_states": [
+            {"name": s.name, "group": s.group, "joint_positions": s.joint_positions}
+            for s in named_states(robot)
+        ],
         "neutral": robot.neutral().tolist(),
         "has_collision_geometry": robot.has_collision_geometry,
         "collision_pairs": [list(p) for p in collision_link_pairs(robot)],

@@ -78,12 +78,14 @@ def inverse_velocity(
     mode: str = "pose",
     threshold: float = SINGULAR_THRESHOLD,
     max_damping: float = MAX_DAMPING,
+    joints: np.ndarray | None = None,
 ) -> InverseVelocity:
     """Joint velocities realising ``twist`` (damped least squares, see the module doc).
 
     Only the joints that support ``frame`` move; ``mode`` selects the task rows (``pose``:
     all six, ``position``: the linear rows, ``orientation``: the angular rows; the other
-    components of ``twist`` are ignored).
+    components of ``twist`` are ignored). ``joints`` (wire indices, e.g. a planning
+    group's) restricts the moving joints further.
     """
     twist = np.asarray(twist, dtype=float)
     if twist.shape != (6,):
@@ -92,6 +94,8 @@ def inverse_velocity(
         raise InvalidInputError("use pose, position or orientation", "mode")
     rows = np.array(MODE_ROWS[mode])
     cols = robot.supporting_joints(frame)
+    if joints is not None:
+        cols = cols[np.isin(cols, joints)]
     J = frame_jacobian(robot, q, frame, reference)
     Jt = J[np.ix_(rows, cols)]
     t = twist[rows]
