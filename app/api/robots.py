@@ -24,9 +24,9 @@ from app.api.offload import offload
 from app.api.responses import ORJSONResponse
 from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
+from app.api.semantics import EndEffectorOut, GroupOut, NamedStateOut, semantics_detail
 from app.documents.dh import MAX_DH_DOCUMENT_BYTES, MalformedDocumentError, parse_dh_document
 from app.kinematics.collision_pairs import collision_link_pairs
-from app.kinematics.groups import named_states, robot_groups
 from app.kinematics.models import RobotModel
 from app.registry import Registry
 from app.store import ID_PATTERN
@@ -77,37 +77,6 @@ class FrameOut(BaseModel):
     name: str
     kind: str = Field(description="link | fixed (URDF fixed joint) | joint.")
     parent_joint: str | None = Field(description="The actuated joint that moves it, if any.")
-
-
-class GroupOut(BaseModel):
-    """A planning group of the SRDF, resolved against the model."""
-
-    name: str
-    joints: list[str] = Field(
-        description="Its configuration joints (actuated, no mimic followers), in joint order: "
-        "a `q` of this length is accepted with `group`."
-    )
-    tip: str = Field(
-        description="Its default frame: its chain's tip_link, else the parent_link of an end "
-        "effector attached to it, else its deepest link."
-    )
-
-
-class EndEffectorOut(BaseModel):
-    """An SRDF end effector: the tool group ``group`` attached at ``parent_link``."""
-
-    name: str
-    parent_link: str
-    group: str
-    parent_group: str | None
-
-
-class NamedStateOut(BaseModel):
-    """An SRDF group state: usable as an IK seed by name (``"seed": "ready"``)."""
-
-    name: str
-    group: str | None = Field(description="The group it is a state of (null if not given).")
-    joint_positions: dict[str, float] = Field(description="Joint → value (rad or m).")
 
 
 class RobotDetail(BaseModel):
@@ -249,23 +218,7 @@ def robot_detail(robot: RobotModel) -> dict[str, Any]:
             {"name": f.name, "kind": f.kind, "parent_joint": f.parent_joint} for f in robot.frames
         ],
         "end_effector": robot.ee_frame,
-        "groups": [
-            {"name": g.name, "joints": list(g.joints), "tip": g.tip}
-            for g in robot_groups(robot).values()
-        ],
-        "end_effectors": [
-            {
-                "name": e.name,
-                "parent_link": e.parent_link,
-                "group": e.group,
-                "parent_group": e.parent_group,
-            }
-            for e in robot.semantics.end_effectors
-        ],
-        "named_states": [
-            {"name": s.name, "group": s.group, "joint_positions": s.joint_positions}
-            for s in named_states(robot)
-        ],
+        **semantics_detail(robot),
         "neutral": robot.neutral().tolist(),
         "has_collision_geometry": robot.has_collision_geometry,
         "collision_pairs": [list(p) for p in collision_link_pairs(robot)],
