@@ -101,6 +101,21 @@ def test_get_lists_groups_end_effectors_states_and_the_default_tip(client: TestC
     assert body["end_effector"] == "panda_link8"
 
 
+def test_default_tip_is_the_srdf_end_effector_unless_ee_frame_is_given(tmp_path, urdf: str) -> None:
+    with TestClient(create_app(Settings(data_dir=tmp_path))) as c:
+        plain = c.post("/robots/urdf", json={"name": "p1", "urdf": urdf, "srdf": SRDF})
+        assert plain.status_code == 201, plain.text
+        assert plain.json()["end_effector"] == "panda_link8"
+        explicit = c.post(
+            "/robots/urdf",
+            json={"name": "p2", "urdf": urdf, "srdf": SRDF, "ee_frame": "panda_hand_tcp"},
+        )
+        assert explicit.status_code == 201, explicit.text
+        assert explicit.json()["end_effector"] == "panda_hand_tcp"
+        # and the stored robot answers with it
+        assert c.get("/robots/p1").json()["end_effector"] == "panda_link8"
+
+
 def test_catalog_panda_lists_its_srdf_groups(client: TestClient) -> None:
     body = client.get("/robots/panda").json()
     groups = {g["name"]: g for g in body["groups"]}
@@ -110,16 +125,6 @@ def test_catalog_panda_lists_its_srdf_groups(client: TestClient) -> None:
     assert [s["name"] for s in body["named_states"]] == ["default"]
     assert body["end_effectors"][0]["parent_link"] == "panda_hand_tcp"
     assert body["end_effector"] == "panda_hand_tcp"  # the catalog's configured ee_frame
-
-
-def test_explicit_ee_frame_wins_over_the_srdf(tmp_path, urdf: str) -> None:
-    with TestClient(create_app(Settings(data_dir=tmp_path))) as c:
-        resp = c.post(
-            "/robots/urdf",
-            json={"name": "p2", "urdf": urdf, "srdf": SRDF, "ee_frame": "panda_hand_tcp"},
-        )
-        assert resp.status_code == 201, resp.text
-        assert resp.json()["end_effector"] == "panda_hand_tcp"
 
 
 # ---------------------------------------------------------------------------- FK, Jacobian
