@@ -114,7 +114,7 @@ def _attr(el: Any, attr: str, where: str, field: str) -> str:
 
 
 def parse_semantics(
-    text: str | None, field: str = "srdf", limits: XmlLimits = TRUSTED
+    text: str | None, field: str = "srdf", limits: XmlLimits | None = TRUSTED
 ) -> Semantics:
     """The groups, end effectors and named states of an SRDF (``None``: empty).
 

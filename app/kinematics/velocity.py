@@ -105,7 +105,10 @@ def inverse_velocity(
     U, s, Vt = np.linalg.svd(Jt, full_matrices=False)
     sigma_min = float(s[-1])
     lam = damping_for(sigma_min, threshold, max_damping)
-    gain = s / (s * s + lam * lam)  # = 1/σ_i when λ = 0 (then every σ_i ≥ ε > 0)
+    # = 1/σ_i when λ = 0 (then every σ_i ≥ ε > 0); a direction whose σ_i² + λ² underflows
+    # to 0 (σ_i = 0 and a tiny λ) gets no velocity instead of 0/0
+    denom = s * s + lam * lam
+    gain = np.divide(s, denom, out=np.zeros_like(s), where=denom > 0.0)
     qdot[cols] = Vt.T @ (gain * (U.T @ t))
     achieved = J @ qdot
     residual = float(np.linalg.norm(achieved[rows] - t))
