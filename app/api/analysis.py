@@ -22,7 +22,7 @@ from app.api.errors import ERROR_RESPONSES
 from app.api.jacobian import REFERENCE_DOC
 from app.api.offload import offload
 from app.api.responses import ORJSONResponse
-from app.api.schemas import ConfigurationIn, Finite, JointValue, RobotId, Schema
+from app.api.schemas import ConfigurationIn, Finite, JointValue, RobotId, Schema, group_field
 from app.kinematics.analysis import (
     DEFAULT_RELATIVE_TOLERANCE,
     Part,
@@ -34,7 +34,9 @@ from app.kinematics.analysis import (
     compute_manipulability as manipulability_core,
 )
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.groups import default_frame, expand_rows, group, row_width
 from app.kinematics.jacobian import Reference
+from app.kinematics.models import RobotModel
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["analysis"])
 
@@ -55,7 +57,9 @@ Load = Annotated[Finite, Field(ge=-1e12, le=1e12)]
 class TaskOptions(Schema):
     """Which frame, which Jacobian rows, which reference, which rank tolerance."""
 
-    frame: str | None = Field(None, description="Frame; default the end effector.")
+    frame: str | None = Field(
+        None, description="Frame; default the end effector (with `group`: the group's tip)."
+    )
     part: Part | None = Field(None, description=PART_DOC)
     rows: list[Row] | None = Field(None, description=ROWS_DOC, max_length=6)
     reference: Reference = Field("world", description=REFERENCE_DOC)
@@ -117,8 +121,10 @@ class ManipulabilityBatchRequest(TaskOptions):
     """Many configurations, one task."""
 
     configurations: list[list[JointValue]] = Field(
-        description="N configurations, each one value per joint in joint order (rad, m)."
+        description="N configurations, each one value per joint in joint order (rad, m); "
+        "with `group`, rows of the group's joints only are accepted too (others neutral)."
     )
+    group: str | None = group_field()
 
 
 class ManipulabilityBatchResponse(BaseModel):
@@ -140,9 +146,12 @@ class ManipulabilityBatchResponse(BaseModel):
 
 
 class StaticsRequest(ConfigurationIn):
-    """Exactly one of wrench (→ torques) or torques (→ wrench)."""
+    """Exactly one of wrench (→ torques) or torques (→ wrench); with `group`, the torques are
+    those of the group's joints (in the group's order)."""
 
-    frame: str | None = Field(None, description="Frame; default the end effector.")
+    frame: str | None = Field(
+        None, description="Frame; default the end effector (with `group`: the group's tip)."
+    )
     reference: Reference = Field(
         "world",
         description="Axes of the wrench (as for the Jacobian). world: force and moment about "
@@ -193,8 +202,9 @@ async def compute_manipulability(
 ) -> ORJSONResponse:
     """Manipulability, singularity and ellipsoids of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot)
-    frame = body.frame or robot.ee_frame
+    grp = group(robot, body.group)
+    q = body.config(robot, grp)
+    frame = default_frame(robot, grp, body.frame)
     res = manipulability_core(
         robot,
         q,
@@ -203,16 +213,19 @@ async def compute_manipulability(
         rows=body.rows,
         reference=body.reference,
         relative_tolerance=body.relative_tolerance,
+        joints=None if grp is None else grp.indices,
     )
     return ORJSONResponse(_manip_json(robot.id, frame, body.reference, q, res))
 
 
 def _batch_body(
-    raw: bytes, n_joints: int, limit: int
+    raw: bytes, robot: RobotModel, limit: int
 ) -> tuple[ManipulabilityBatchRequest, np.ndarray]:
-    """Decode a batch body: the task options and the checked configurations."""
-    body, rows = decode_body(raw, ManipulabilityBatchRequest, {"configurations": n_joints})
-    return body, configurations(rows["configurations"], n_joints, limit)
+    """Decode a batch body: the task options and the checked (full) configurations."""
+    body, rows = decode_body(raw, ManipulabilityBatchRequest, {"configurations": None})
+    grp = group(robot, body.group)
+    rows = rows["configurations"]
+    return body, expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
 
 
 @router.post(
@@ -229,8 +242,9 @@ async def compute_manipulability_batch(
     robot = await load_robot(reg, robot_id)
     raw = await request.body()
     limit = request.app.state.settings.max_batch
-    body, qs = await offload(_batch_body, raw, robot.n, limit)
-    frame = body.frame or robot.ee_frame
+    body, qs = await offload(_batch_body, raw, robot, limit)
+    grp = group(robot, body.group)
+    frame = default_frame(robot, grp, body.frame)
     out = await offload(
         manipulability_batch,
         robot,
@@ -240,6 +254,7 @@ async def compute_manipulability_batch(
         rows=body.rows,
         reference=body.reference,
         relative_tolerance=body.relative_tolerance,
+        joints=None if grp is None else grp.indices,
     )
     return ORJSONResponse(
         {"robot_id": robot.id, "frame": frame, "reference": body.reference, **out}
@@ -259,18 +274,23 @@ async def compute_statics(
     if (body.wrench is None) == (body.torques is None):
         raise InvalidInputError("give exactly one of wrench or torques", "wrench")
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot)
-    frame = body.frame or robot.ee_frame
+    grp = group(robot, body.group)
+    q = body.config(robot, grp)
+    frame = default_frame(robot, grp, body.frame)
+    joints = None if grp is None else grp.indices
+    names = robot.joint_names if grp is None else list(grp.joints)
     if body.wrench is not None:
-        st = torques_from_wrench(robot, q, frame, np.array(body.wrench), body.reference)
+        st = torques_from_wrench(robot, q, frame, np.array(body.wrench), body.reference, joints)
     else:
-        if len(body.torques) != robot.n:
+        if len(body.torques) != len(names):
             raise InvalidInputError(
-                f"expected {robot.n} values (one per joint: {', '.join(robot.joint_names)}), "
+                f"expected {len(names)} values (one per joint: {', '.join(names)}), "
                 f"got {len(body.torques)}",
                 "torques",
             )
-        st = wrench_from_torques(robot, q, frame, np.array(body.torques), body.reference)
+        st = wrench_from_torques(
+            robot, q, frame, np.array(body.torques), body.reference, joints=joints
+        )
     return ORJSONResponse(
         {
             "robot_id": robot.id,
@@ -279,7 +299,7 @@ async def compute_statics(
             "q": q,
             "wrench": st.wrench,
             "torques": st.torques,
-            "joint_names": robot.joint_names,
+            "joint_names": names,
             "residual": st.residual,
             "residual_norm": st.residual_norm,
             "rank": st.rank,

@@ -34,7 +34,7 @@ FastForm = Callable[[dict[str, Any]], dict[str, np.ndarray] | None]
 def decode_body(
     raw: bytes,
     model: type[S],
-    matrices: Mapping[str, int] | None = None,
+    matrices: Mapping[str, int | None] | None = None,
     fast: FastForm | None = None,
 ) -> tuple[S, dict[str, Any]]:
     """A raw JSON body as a validated ``model`` and its numeric matrices.
@@ -46,7 +46,8 @@ def decode_body(
     model
         The request model; errors are FastAPI's 422 naming ``body.<field>``.
     matrices
-        Fields holding N×width number matrices, name → width. When every one present is a
+        Fields holding N×width number matrices, name → width (``None``: any width, checked
+        by the caller, e.g. :func:`configurations`). When every one present is a
         plain rectangular matrix of finite JSON numbers of its width (no ``true``/``false``
         anywhere in the body, which NumPy would turn into 1/0), it becomes a float array
         without pydantic, and the model validates the rest of the body with those fields
@@ -76,7 +77,9 @@ def decode_body(
     return body, {name: getattr(body, name) for name in matrices if getattr(body, name) is not None}
 
 
-def _fast_matrices(obj: dict[str, Any], matrices: Mapping[str, int]) -> dict[str, Any] | None:
+def _fast_matrices(
+    obj: dict[str, Any], matrices: Mapping[str, int | None]
+) -> dict[str, Any] | None:
     """The matrix fields present in ``obj`` as arrays; ``None`` if one is not plain."""
     arrays = {}
     for name, width in matrices.items():
@@ -109,6 +112,10 @@ def configurations(
                     f"configurations.{i}",
                 )
         rows = np.array(rows, dtype=float).reshape(n, n_joints)
+    elif rows.shape[1] != n_joints:
+        raise InvalidInputError(
+            f"expected {n_joints} values (one per joint), got {rows.shape[1]}", "configurations.0"
+        )
     check_joint_values(rows, "configurations")
     return rows
 

@@ -20,9 +20,10 @@ from app.api.errors import ERROR_RESPONSES
 from app.api.offload import offload, offload_cancellable
 from app.api.responses import ORJSONResponse
 from app.api.scenes import ObstacleIn, resolve_obstacles
-from app.api.schemas import ConfigurationIn, JointValue, RobotId, Schema, Vec3Out
+from app.api.schemas import ConfigurationIn, JointValue, RobotId, Schema, Vec3Out, group_field
 from app.kinematics.collision import collision_model, report_json
 from app.kinematics.collision_pairs import collision_link_pairs, collision_links
+from app.kinematics.groups import expand_rows, group, row_width
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle
 
@@ -106,8 +107,10 @@ class CollisionBatchRequest(CollisionOptions):
     """Many configurations (e.g. the waypoints of a trajectory)."""
 
     configurations: list[list[JointValue]] = Field(
-        description="N configurations, each one value per joint in joint order (rad, m)."
+        description="N configurations, each one value per joint in joint order (rad, m); "
+        "with `group`, rows of the group's joints only are accepted too (others neutral)."
     )
+    group: str | None = group_field()
 
 
 class CollisionBatchResponse(BaseModel):
@@ -169,7 +172,7 @@ async def check_collisions(
     never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
     """
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot)
+    q = body.config(robot, group(robot, body.group))
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     built = robot.extras.get(f"collision.{body.geometry}") is not None
     heavy = (
@@ -227,7 +230,10 @@ async def check_collisions_batch(
 ) -> ORJSONResponse:
     """Check many configurations (e.g. a trajectory's waypoints) in the work pool."""
     robot = await load_robot(reg, robot_id)
-    qs = configurations(body.configurations, robot.n, request.app.state.settings.max_batch)
+    grp = group(robot, body.group)
+    rows = body.configurations
+    limit = request.app.state.settings.max_batch
+    qs = expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     out = await offload_cancellable(request, _check_batch, robot, qs, obstacles, body)
     return ORJSONResponse(out)

@@ -12,8 +12,17 @@ from app.api.errors import ERROR_RESPONSES
 from app.api.offload import offload
 from app.api.poses import Pose, pose_json
 from app.api.responses import ORJSONResponse
-from app.api.schemas import ConfigurationIn, JointValue, QuatOut, RobotId, Schema, Vec3Out
+from app.api.schemas import (
+    ConfigurationIn,
+    JointValue,
+    QuatOut,
+    RobotId,
+    Schema,
+    Vec3Out,
+    group_field,
+)
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
+from app.kinematics.groups import default_frame, expand_rows, group, row_width
 from app.kinematics.models import RobotModel
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
@@ -24,7 +33,8 @@ class FKRequest(ConfigurationIn):
 
     frames: list[str] | None = Field(
         None,
-        description='Frame names; default the end effector; ["*"] for every frame.',
+        description="Frame names; default the end effector (with `group`: the group's tip); "
+        '["*"] for every frame.',
         max_length=4096,
     )
 
@@ -43,9 +53,13 @@ class FKBatchRequest(Schema):
     """Many configurations, one frame."""
 
     configurations: list[list[JointValue]] = Field(
-        description="N configurations, each one value per joint in joint order (rad, m).",
+        description="N configurations, each one value per joint in joint order (rad, m); "
+        "with `group`, rows of the group's joints only are accepted too (others neutral).",
     )
-    frame: str | None = Field(None, description="Frame to place; default the end effector.")
+    frame: str | None = Field(
+        None, description="Frame to place; default the end effector (or the group's tip)."
+    )
+    group: str | None = group_field()
 
 
 class FKBatchResponse(BaseModel):
@@ -69,8 +83,9 @@ async def compute_fk(robot_id: RobotId, body: FKRequest, reg: RegistryDep) -> OR
     Out-of-limit configurations are computed, and flagged with ``within_limits: false``.
     """
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot)
-    frames = body.frames if body.frames else [robot.ee_frame]
+    grp = group(robot, body.group)
+    q = body.config(robot, grp)
+    frames = body.frames if body.frames else [default_frame(robot, grp, None)]
     poses = forward_kinematics(robot, q, frames)
     outside = robot.limit_violations(q)
     return ORJSONResponse(
@@ -112,8 +127,10 @@ async def compute_fk_batch(
 
 
 def _fk_batch(robot: RobotModel, raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray]:
-    body, rows = decode_body(raw, FKBatchRequest, {"configurations": robot.n})
-    qs = configurations(rows["configurations"], robot.n, limit)
-    frame = body.frame or robot.ee_frame
+    body, rows = decode_body(raw, FKBatchRequest, {"configurations": None})
+    grp = group(robot, body.group)
+    rows = rows["configurations"]
+    qs = expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
+    frame = default_frame(robot, grp, body.frame)
     positions, quats = forward_kinematics_batch(robot, qs, frame)
     return frame, positions, quats

@@ -16,11 +16,12 @@ from app.api.errors import ERROR_RESPONSES
 from app.api.offload import offload_cancellable
 from app.api.responses import ORJSONResponse
 from app.api.scenes import ObstacleIn, resolve_obstacles
-from app.api.schemas import Finite, Matrix4, Position3, Quat, RobotId, Schema
+from app.api.schemas import Finite, Matrix4, Position3, Quat, RobotId, Schema, group_field
 from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.ik.problem import IKOptions, frame_name, seed_configuration, target_placement
+from app.kinematics.groups import default_frame, group
+from app.kinematics.ik.problem import IKOptions, frame_name, group_seed, target_placement
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
 from app.metrics import record_ik
@@ -61,7 +62,10 @@ class Tolerance(Schema):
 class IKOptionsIn(Schema):
     """Options shared by single and batch IK (the wire shape of :class:`IKOptions`)."""
 
-    frame: str | None = Field(None, description="Frame to place; default the end effector.")
+    frame: str | None = Field(
+        None, description="Frame to place; default the end effector (with `group`: its tip)."
+    )
+    group: str | None = group_field()
     mode: Literal["pose", "position", "orientation"] = Field("pose", description=MODE_DOC)
     weights: Annotated[list[NonNegative], Field(min_length=6, max_length=6)] | None = Field(
         None,
@@ -70,11 +74,13 @@ class IKOptionsIn(Schema):
     )
     # Finite, not JointValue: the union's validation errors would be named
     # seed.list[constrained-float].4; seed_configuration checks the bound, naming seed.4.
-    seed: list[Finite] | dict[str, Finite] | None = Field(
+    seed: list[Finite] | dict[str, Finite] | Annotated[str, Field(max_length=256)] | None = Field(
         None,
-        description="Start configuration: one value per joint (joint order) or joint → value "
-        "(others: middle of their limits). Default: the middle of the joint limits. Values "
-        "within ±10000 (rad or m), as every configuration.",
+        description="Start configuration: one value per joint (joint order; with `group`, one "
+        "per joint of the group is accepted too), joint → value (others: middle of their "
+        'limits), or the name of a named state of the SRDF (e.g. "ready"; GET '
+        "/robots/{id} lists them). Default: the middle of the joint limits. Values within "
+        "±10000 (rad or m), as every configuration. IK answers always hold every joint.",
     )
     tolerance: Tolerance = Field(default_factory=Tolerance)
     timeout_ms: Positive = Field(
@@ -217,7 +223,8 @@ def _accept(robot: RobotModel, collisions: Collisions | None) -> Any:
 def _options(robot: RobotModel, body: IKOptionsIn, num_solutions: int = 1) -> IKOptions:
     """The core's options from the request body (validated there)."""
     return IKOptions(
-        frame=frame_name(robot, body.frame),
+        frame=frame_name(robot, default_frame(robot, group(robot, body.group), body.frame)),
+        group=body.group,
         mode=body.mode,
         weights=None if body.weights is None else tuple(body.weights),
         tolerance=(body.tolerance.position, body.tolerance.orientation),
@@ -340,7 +347,7 @@ async def solve_ik(
     options = _options(robot, body, body.num_solutions)
     collisions = _collisions(request, body)
     target = _target(body.target, body.mode)
-    seed = seed_configuration(robot, body.seed)
+    seed = group_seed(robot, group(robot, body.group), body.seed)
     if body.timeout_ms <= INLINE_BUDGET_MS and collisions is None:
         out = _solve_one(robot, target, seed, options, None)
     else:
@@ -389,7 +396,7 @@ async def solve_ik_batch(
     options = _options(robot, body)
     collisions = _collisions(request, body)
     targets = [_target(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)]
-    seed = seed_configuration(robot, body.seed)
+    seed = group_seed(robot, group(robot, body.group), body.seed)
     out = await offload_cancellable(
         request, _solve_batch, robot, targets, seed, options, collisions, body.chain_seeds
     )

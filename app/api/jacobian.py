@@ -9,6 +9,7 @@ from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
 from app.api.responses import ORJSONResponse
 from app.api.schemas import ConfigurationIn, RobotId
+from app.kinematics.groups import default_frame, group
 from app.kinematics.jacobian import Reference, frame_jacobian
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
@@ -23,18 +24,23 @@ REFERENCE_DOC = (
 class JacobianRequest(ConfigurationIn):
     """Configuration, frame and reference."""
 
-    frame: str | None = Field(None, description="Frame; default the end effector.")
+    frame: str | None = Field(
+        None, description="Frame; default the end effector (with `group`: the group's tip)."
+    )
     reference: Reference = Field("world", description=REFERENCE_DOC)
 
 
 class JacobianResponse(BaseModel):
-    """The Jacobian, rows [vx, vy, vz, ωx, ωy, ωz], columns in joint order."""
+    """The Jacobian, rows [vx, vy, vz, ωx, ωy, ωz], columns in joint order (with `group`:
+    the group's joints, in the group's order)."""
 
     robot_id: str
     frame: str
     reference: str
     q: list[float]
-    jacobian: list[list[float]] = Field(description="6×n; linear rows in m/rad or m/m.")
+    jacobian: list[list[float]] = Field(
+        description="6×n (with `group`: 6×k, k the group's joints); linear rows in m/rad or m/m."
+    )
     joint_names: list[str] = Field(description="The joint of each column.")
 
 
@@ -49,9 +55,13 @@ async def compute_jacobian(
 ) -> ORJSONResponse:
     """Geometric Jacobian of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot)
-    frame = body.frame or robot.ee_frame
+    grp = group(robot, body.group)
+    q = body.config(robot, grp)
+    frame = default_frame(robot, grp, body.frame)
     J = frame_jacobian(robot, q, frame, body.reference)
+    names = robot.joint_names
+    if grp is not None:  # the group's columns (a joint not moving the frame: a zero column)
+        J, names = J[:, grp.indices], list(grp.joints)
     return ORJSONResponse(
         {
             "robot_id": robot.id,
@@ -59,6 +69,6 @@ async def compute_jacobian(
             "reference": body.reference,
             "q": q,
             "jacobian": J,
-            "joint_names": robot.joint_names,
+            "joint_names": names,
         }
     )

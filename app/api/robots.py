@@ -24,6 +24,7 @@ from app.api.offload import offload
 from app.api.responses import ORJSONResponse
 from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
+from app.api.semantics import EndEffectorOut, GroupOut, NamedStateOut, semantics_detail
 from app.documents.dh import MAX_DH_DOCUMENT_BYTES, MalformedDocumentError, parse_dh_document
 from app.kinematics.collision_pairs import collision_link_pairs
 from app.kinematics.models import RobotModel
@@ -104,13 +105,16 @@ class RobotDetail(BaseModel):
     )
     frames: list[FrameOut] = Field(description="Every named frame (links and fixed frames).")
     end_effector: str = Field(
-        description="Default frame of fk, jacobian and ik: the catalog's choice, else the "
-        "SRDF end effector's parent link, else the tip of the longest serial chain that is "
-        "not a gripper finger (a finger: a link moved by one of at least two sibling "
-        "branches made only of prismatic and mimic joints; among links held by the same "
-        "joint, a link without geometry such as a TCP or tool0 first, then the farthest), "
-        "else the deepest link."
+        description="Default frame of fk, jacobian and ik (the default tip): the ee_frame given "
+        "at upload (or the catalog's choice), else the parent_link of the SRDF's first end "
+        "effector, else the tip of the longest serial chain that is not a gripper finger (a "
+        "finger: a link moved by one of at least two sibling branches made only of prismatic "
+        "and mimic joints; among links held by the same joint, a link without geometry such "
+        "as a TCP or tool0 first, then the farthest), else the deepest link."
     )
+    groups: list[GroupOut] = Field(description="SRDF planning groups (`group` in requests).")
+    end_effectors: list[EndEffectorOut] = Field(description="SRDF end effectors.")
+    named_states: list[NamedStateOut] = Field(description="SRDF group states (IK seeds).")
     neutral: list[float] = Field(description="Neutral configuration (0, clipped to limits).")
     has_collision_geometry: bool = Field(description="Whether the URDF has <collision>.")
     collision_pairs: list[list[str]] = Field(
@@ -192,9 +196,16 @@ class UrdfUpload(Schema):
         "package://<package>/<path> URIs; only revolute, continuous, prismatic and fixed "
         "joints.",
     )
-    srdf: Text | None = Field(None, description="SRDF document (disabled collision pairs).")
+    srdf: Text | None = Field(
+        None,
+        description="SRDF document: disabled collision pairs, planning groups (chain, joints, "
+        "links, subgroups), end effectors and group states, checked against the URDF.",
+    )
     ee_frame: Text | None = Field(
-        None, max_length=256, description="Default end-effector frame (default: deepest link)."
+        None,
+        max_length=256,
+        description="Default end-effector frame (default: the parent_link of the SRDF's first "
+        "end effector, else the deepest link).",
     )
     description: Text = Field("", max_length=1000, description="Short description.")
 
@@ -228,6 +239,7 @@ def robot_detail(robot: RobotModel) -> dict[str, Any]:
             {"name": f.name, "kind": f.kind, "parent_joint": f.parent_joint} for f in robot.frames
         ],
         "end_effector": robot.ee_frame,
+        **semantics_detail(robot),
         "neutral": robot.neutral().tolist(),
         "has_collision_geometry": robot.has_collision_geometry,
         "collision_pairs": [list(p) for p in collision_link_pairs(robot)],

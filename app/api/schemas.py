@@ -7,12 +7,13 @@ so a generated client can pass an answer's pose back in a request.
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 import numpy as np
 from fastapi import Path
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, Strict
 
+from app.kinematics.groups import Group, configuration
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
 from app.kinematics.text import SURROGATE_REASON, has_surrogate
 
@@ -56,13 +57,28 @@ class Schema(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
 
+#: The ``group`` field of every request that takes a configuration and a frame.
+GROUP_DOC = (
+    "A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the "
+    "configuration may hold the group's joints only (in the group's order; the other joints "
+    "at neutral, or at the seed's values for IK), the default frame is the group's tip, and "
+    "Jacobians and IK move only the group's joints."
+)
+
+
+def group_field() -> Any:
+    """The ``group`` request field (optional group name)."""
+    return Field(None, max_length=256, description=GROUP_DOC)
+
+
 class ConfigurationIn(Schema):
     """A configuration: ``q`` in joint order, or a ``joint_positions`` map (not both)."""
 
     q: list[JointValue] | None = Field(
         None,
         description="One value per actuated joint, in the order of GET /robots/{id} "
-        "(rad for revolute and continuous joints, m for prismatic ones).",
+        "(rad for revolute and continuous joints, m for prismatic ones); with `group`, "
+        "one per joint of the group (in the group's order) is accepted too.",
         max_length=1024,
     )
     joint_positions: dict[str, JointValue] | None = Field(
@@ -73,6 +89,8 @@ class ConfigurationIn(Schema):
         max_length=1024,
     )
 
-    def config(self, robot: RobotModel) -> np.ndarray:
-        """The validated wire configuration for ``robot``."""
-        return robot.configuration(self.q, self.joint_positions)
+    group: str | None = group_field()
+
+    def config(self, robot: RobotModel, grp: Group | None = None) -> np.ndarray:
+        """The validated wire configuration for ``robot`` (``grp``: the resolved ``group``)."""
+        return configuration(robot, grp, self.q, self.joint_positions)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
+import numpy as np
 from fastapi import APIRouter
 from pydantic import BaseModel, Field
 
@@ -12,6 +13,7 @@ from app.api.errors import ERROR_RESPONSES
 from app.api.responses import ORJSONResponse
 from app.api.schemas import ConfigurationIn, Finite, RobotId
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.groups import default_frame, group
 from app.kinematics.velocity import (
     MAX_DAMPING,
     MAX_RATE,
@@ -32,14 +34,19 @@ NonNegative = Annotated[float, Field(ge=0.0, le=MAX_RATE, allow_inf_nan=False, s
 class VelocityRequest(ConfigurationIn):
     """A configuration plus exactly one of ``joint_velocities`` (forward) or ``twist``."""
 
-    frame: str | None = Field(None, description="Frame; default the end effector.")
+    frame: str | None = Field(
+        None, description="Frame; default the end effector (with `group`: the group's tip)."
+    )
     reference: Literal["world", "local"] = Field(
         "world",
         description="Axes of the twist: world (origin velocity and angular velocity in world "
         "axes, Pinocchio LOCAL_WORLD_ALIGNED) | local (the frame's own axes, LOCAL).",
     )
     joint_velocities: list[Rate] | None = Field(
-        None, description="Forward: q̇, one per joint in joint order (rad/s, m/s).", max_length=1024
+        None,
+        description="Forward: q̇, one per joint in joint order (rad/s, m/s); with `group`, one "
+        "per joint of the group is accepted too (the others at rest).",
+        max_length=1024,
     )
     twist: Twist | None = Field(
         None, description="Inverse: [vx, vy, vz, wx, wy, wz] (m/s, rad/s) to realise."
@@ -87,15 +94,20 @@ async def compute_velocity(
     if (body.joint_velocities is None) == (body.twist is None):
         raise InvalidInputError("give exactly one of joint_velocities or twist", "twist")
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot)
-    frame = body.frame or robot.ee_frame
+    grp = group(robot, body.group)
+    q = body.config(robot, grp)
+    frame = default_frame(robot, grp, body.frame)
     robot.frame_id(frame)
     out = {"robot_id": robot.id, "frame": frame, "reference": body.reference, "q": q}
     if body.joint_velocities is not None:
-        twist = forward_velocity(robot, q, body.joint_velocities, frame, body.reference)
+        qdot = body.joint_velocities
+        if grp is not None and len(qdot) == grp.size != robot.n:
+            qdot = np.zeros(robot.n)
+            qdot[grp.indices] = body.joint_velocities
+        twist = forward_velocity(robot, q, qdot, frame, body.reference)
         out |= {
             "direction": "forward",
-            "joint_velocities": body.joint_velocities,
+            "joint_velocities": qdot,
             "twist": twist,
             "residual": None,
             "damping": None,
@@ -111,6 +123,7 @@ async def compute_velocity(
             mode=body.mode,
             threshold=body.singular_threshold,
             max_damping=body.max_damping,
+            joints=None if grp is None else grp.indices,
         )
         out |= {
             "direction": "inverse",

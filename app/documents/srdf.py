@@ -1,19 +1,31 @@
-"""Checks of a client-supplied SRDF (the collision pairs a URDF upload may disable).
+"""Checks of a client-supplied SRDF: collision pairs, groups, end effectors, named states.
 
 Parsed like the URDF by :func:`app.kinematics.xmldoc.parse_literal_xml` (no DTD or
 entities, bounded work, literal names, as Boost.PropertyTree reads it for Pinocchio).
+Groups, end effectors and group states are resolved against the URDF's joints
+(:func:`app.kinematics.semantics.resolve`), so a stored SRDF always resolves.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import Any
+
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.semantics import parse_semantics, resolve
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
 
 def check_srdf_document(
-    text: str, links: set[str], field: str = "srdf", limits: XmlLimits | None = None
+    text: str,
+    links: set[str],
+    field: str = "srdf",
+    limits: XmlLimits | None = None,
+    joints: Mapping[str, Mapping[str, Any]] | None = None,
 ) -> None:
-    """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs."""
+    """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs,
+    and, given the URDF's ``joints`` (:func:`app.kinematics.models.parse_urdf_joints`),
+    groups, end effectors and group states that resolve (422 naming the SRDF element)."""
     root = parse_literal_xml(text, field, limits)
     if root.tag != "robot":
         raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
@@ -24,3 +36,5 @@ def check_srdf_document(
                 raise InvalidInputError(
                     f"<disable_collisions {attr}={link!r}>: no such link in the URDF", field
                 )
+    if joints is not None:
+        resolve(parse_semantics(text, field, limits), joints, field)

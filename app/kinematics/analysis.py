@@ -246,10 +246,17 @@ def manipulability_of(
     )
 
 
-def support_columns(robot: RobotModel, frame: str, field: str = "frame") -> np.ndarray:
-    """Wire indices of the joints that move ``frame``; a frame no joint moves is an error."""
+def support_columns(
+    robot: RobotModel, frame: str, field: str = "frame", joints: np.ndarray | None = None
+) -> np.ndarray:
+    """Wire indices of the joints that move ``frame`` (among ``joints``, e.g. a planning
+    group's, when given); a frame none of them moves is an error."""
     robot.frame_id(frame, field=field)
     cols = robot.supporting_joints(frame)
+    if joints is not None:
+        cols = cols[np.isin(cols, joints)]
+        if cols.size == 0:
+            raise InvalidInputError(f"no joint of the group moves frame {frame!r}", "group")
     if cols.size == 0:
         raise InvalidInputError(f"frame {frame!r} is not moved by any joint", field)
     return cols
@@ -264,10 +271,12 @@ def compute_manipulability(
     rows: Sequence[str | int] | None = None,
     reference: Reference = "world",
     relative_tolerance: float = DEFAULT_RELATIVE_TOLERANCE,
+    joints: np.ndarray | None = None,
 ) -> Manipulability:
-    """Manipulability of ``frame`` at wire configuration ``q`` (see module doc)."""
+    """Manipulability of ``frame`` at wire configuration ``q`` (see module doc); ``joints``
+    (wire indices, e.g. a planning group's) restricts the columns further."""
     ridx = task_rows(part, rows)
-    cols = support_columns(robot, frame)
+    cols = support_columns(robot, frame, joints=joints)
     J = frame_jacobian(robot, q, frame, reference)
     return manipulability_of(
         J[np.ix_(ridx, cols)],
@@ -287,15 +296,17 @@ def manipulability_batch(
     rows: Sequence[str | int] | None = None,
     reference: Reference = "world",
     relative_tolerance: float = DEFAULT_RELATIVE_TOLERANCE,
+    joints: np.ndarray | None = None,
 ) -> dict[str, Any]:
-    """Scalar measures for N configurations (N, n): compact arrays, one entry per row of ``qs``.
+    """Scalar measures for N configurations (N, n): compact arrays, one entry per row of ``qs``
+    (``joints``: as for :func:`compute_manipulability`).
 
     Returns ``yoshikawa``, ``min_singular_value``, ``max_singular_value``,
     ``inverse_condition``, ``condition_number`` (``None`` where singular), ``det_jjt``,
     ``rank`` and ``singular``, with the same definitions as :func:`manipulability_of`.
     """
     ridx = task_rows(part, rows)
-    cols = support_columns(robot, frame)
+    cols = support_columns(robot, frame, joints=joints)
     fid = robot.frame_id(frame)
     rf = REFERENCE_FRAMES[reference]
     qp = robot.to_pin_batch(np.asarray(qs, dtype=float))
@@ -387,19 +398,33 @@ class Statics:
     """Joint torques and the wrench at the frame, related by τ = Jᵀ·F."""
 
     wrench: np.ndarray  # 6
-    torques: np.ndarray  # n (wire order)
-    residual: np.ndarray  # n: τ − Jᵀ F (zeros for the forward map)
+    torques: np.ndarray  # n (wire order), or one per column of ``joints``
+    residual: np.ndarray  # the same length: τ − Jᵀ F (zeros for the forward map)
     residual_norm: float
     rank: int
-    jacobian: np.ndarray  # 6×n
+    jacobian: np.ndarray  # 6×n (or 6×len(joints))
+
+
+def _statics_jacobian(
+    robot: RobotModel, q: np.ndarray, frame: str, reference: Reference, joints: np.ndarray | None
+) -> np.ndarray:
+    """The frame's Jacobian, restricted to the columns of ``joints`` when given."""
+    robot.frame_id(frame)
+    J = frame_jacobian(robot, q, frame, reference)
+    return J if joints is None else J[:, joints]
 
 
 def torques_from_wrench(
-    robot: RobotModel, q: np.ndarray, frame: str, wrench: np.ndarray, reference: Reference
+    robot: RobotModel,
+    q: np.ndarray,
+    frame: str,
+    wrench: np.ndarray,
+    reference: Reference,
+    joints: np.ndarray | None = None,
 ) -> Statics:
-    """τ = Jᵀ·F for a wrench F = [fx, fy, fz, mx, my, mz] at ``frame`` (module doc)."""
-    robot.frame_id(frame)
-    J = frame_jacobian(robot, q, frame, reference)
+    """τ = Jᵀ·F for a wrench F = [fx, fy, fz, mx, my, mz] at ``frame`` (module doc); with
+    ``joints`` (wire indices, e.g. a planning group's), τ of those joints only."""
+    J = _statics_jacobian(robot, q, frame, reference, joints)
     _require_finite(J, "q")
     F = np.asarray(wrench, dtype=float)
     with np.errstate(over="ignore", invalid="ignore"):
@@ -407,7 +432,7 @@ def torques_from_wrench(
     _require_finite(tau, "wrench")
     s = np.linalg.svd(J, compute_uv=False)
     rank = int(np.count_nonzero(s > DEFAULT_RELATIVE_TOLERANCE * (s[0] if s.size else 0.0)))
-    return Statics(F, tau, np.zeros(robot.n), 0.0, rank, J)
+    return Statics(F, tau, np.zeros(J.shape[1]), 0.0, rank, J)
 
 
 def wrench_from_torques(
@@ -417,10 +442,11 @@ def wrench_from_torques(
     torques: np.ndarray,
     reference: Reference,
     relative_tolerance: float = DEFAULT_RELATIVE_TOLERANCE,
+    joints: np.ndarray | None = None,
 ) -> Statics:
-    """Least-squares F with Jᵀ·F ≈ τ (minimum norm among minimisers) and its residual."""
-    robot.frame_id(frame)
-    J = frame_jacobian(robot, q, frame, reference)
+    """Least-squares F with Jᵀ·F ≈ τ (minimum norm among minimisers) and its residual; with
+    ``joints``, τ holds those joints' torques only."""
+    J = _statics_jacobian(robot, q, frame, reference, joints)
     _require_finite(J, "q")
     tau = np.asarray(torques, dtype=float)
     U, s, Vt = np.linalg.svd(J.T, full_matrices=False)  # Jᵀ = U S Vt, n×6

@@ -28,6 +28,7 @@ import pinocchio as pin
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
 from app.kinematics.tip import bare_links, default_tip
+from app.kinematics.semantics import parse_semantics
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
@@ -195,10 +196,12 @@ class RobotModel:
     package_dirs
         Directories ``package://`` mesh URIs resolve against.
     srdf_text
-        Optional SRDF (disabled collision pairs), used by the collision module.
+        Optional SRDF: disabled collision pairs (collision module), groups, end effectors
+        and named states (:attr:`semantics`, :mod:`app.kinematics.groups`).
     ee_frame
-        Default end-effector frame; when ``None``, the tip of the longest serial chain that
-        is not a gripper finger (:func:`app.kinematics.tip.default_tip`).
+        Default end-effector frame; when ``None``, the ``parent_link`` of the SRDF's first
+        ``<end_effector>``, else the tip of the longest serial chain that is not a gripper
+        finger (:func:`app.kinematics.tip.default_tip`).
     """
 
     def __init__(
@@ -226,6 +229,10 @@ class RobotModel:
         self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
 
         urdf_joints = parse_urdf_joints(urdf_text)
+        #: The URDF's joints (fixed and mimic included), name → description.
+        self.urdf_joints = urdf_joints
+        #: The SRDF's groups, end effectors and named states (empty without an SRDF).
+        self.semantics = parse_semantics(srdf_text)
         self.has_collision_geometry = "<collision" in urdf_text
         self.joints: list[Joint] = []
         for jid in range(1, self.model.njoints):
@@ -302,6 +309,9 @@ class RobotModel:
             self.frames.append(Frame(fname, _FRAME_KIND[f.type], fid, pj))
         self._frame_ids = best
         self.frame_names = [f.name for f in self.frames]
+        srdf_tip = self.semantics.default_tip()
+        if ee_frame is None and srdf_tip in self._frame_ids:
+            ee_frame = srdf_tip  # rule 1 of the default tip: the SRDF's end effector
         self.ee_frame = ee_frame if ee_frame is not None else self._default_tip()
         self.frame_id(self.ee_frame, field="ee_frame")
 

@@ -78,12 +78,14 @@ def inverse_velocity(
     mode: str = "pose",
     threshold: float = SINGULAR_THRESHOLD,
     max_damping: float = MAX_DAMPING,
+    joints: np.ndarray | None = None,
 ) -> InverseVelocity:
     """Joint velocities realising ``twist`` (damped least squares, see the module doc).
 
     Only the joints that support ``frame`` move; ``mode`` selects the task rows (``pose``:
     all six, ``position``: the linear rows, ``orientation``: the angular rows; the other
-    components of ``twist`` are ignored).
+    components of ``twist`` are ignored). ``joints`` (wire indices, e.g. a planning
+    group's) restricts the moving joints further.
     """
     twist = np.asarray(twist, dtype=float)
     if twist.shape != (6,):
@@ -92,6 +94,8 @@ def inverse_velocity(
         raise InvalidInputError("use pose, position or orientation", "mode")
     rows = np.array(MODE_ROWS[mode])
     cols = robot.supporting_joints(frame)
+    if joints is not None:
+        cols = cols[np.isin(cols, joints)]
     J = frame_jacobian(robot, q, frame, reference)
     Jt = J[np.ix_(rows, cols)]
     t = twist[rows]
@@ -101,7 +105,10 @@ def inverse_velocity(
     U, s, Vt = np.linalg.svd(Jt, full_matrices=False)
     sigma_min = float(s[-1])
     lam = damping_for(sigma_min, threshold, max_damping)
-    gain = s / (s * s + lam * lam)  # = 1/σ_i when λ = 0 (then every σ_i ≥ ε > 0)
+    # = 1/σ_i when λ = 0 (then every σ_i ≥ ε > 0); a direction whose σ_i² + λ² underflows
+    # to 0 (σ_i = 0 and a tiny λ) gets no velocity instead of 0/0
+    denom = s * s + lam * lam
+    gain = np.divide(s, denom, out=np.zeros_like(s), where=denom > 0.0)
     qdot[cols] = Vt.T @ (gain * (U.T @ t))
     achieved = J @ qdot
     residual = float(np.linalg.norm(achieved[rows] - t))

@@ -102,3 +102,21 @@ def test_bad_shapes(registry) -> None:
     with pytest.raises(InvalidInputError) as e:
         inverse_velocity(robot, q, np.zeros(5), "tool0", "world")
     assert e.value.field == "twist"
+
+
+def test_inverse_with_a_damping_that_underflows_stays_finite(registry) -> None:
+    """λ² underflows to 0 at an exact singularity (σ = 0): the lost direction gets no
+    velocity (was 0/0 = NaN, a 200 with nulls found by schemathesis)."""
+    robot = registry.get("planar2")
+    out = inverse_velocity(
+        robot,
+        np.array([-2412.7813776535213, 1.9898734364016856e-87]),
+        np.array([3e5, 1e5, 0.0, 8e3, 4e5, 6e-8]),
+        "tool",
+        "local",
+        mode="orientation",
+        threshold=75560.0,
+        max_damping=5e-167,
+    )
+    assert np.all(np.isfinite(out.joint_velocities)) and np.all(np.isfinite(out.twist))
+    assert np.isfinite(out.residual)

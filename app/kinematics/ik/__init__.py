@@ -99,6 +99,7 @@ import pinocchio as pin
 
 from app.kinematics.analytic_ik import candidates
 from app.kinematics.errors import Cancelled
+from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.compiled import run_compiled
 from app.kinematics.ik.dls import run_python
 from app.kinematics.ik.precompute import ik_chain
@@ -161,7 +162,8 @@ def solve(
         configuration met and ``status`` says whether the time budget (``timeout``) or the
         iteration cap (``not_converged``) ended the search.
     """
-    ch = ik_chain(robot, frame_name(robot, options.frame))
+    grp = group(robot, options.group)
+    ch = ik_chain(robot, frame_name(robot, default_frame(robot, grp, options.frame)), grp)
     # The budget starts once the chain is prepared: its one-time set-up (restart table,
     # ~20 ms on the first query of a robot and frame) is not charged to the first query.
     t_start = time.perf_counter()

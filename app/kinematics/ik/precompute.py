@@ -19,6 +19,8 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics import analytic_ik, ik_kernel
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.groups import Group
 from app.kinematics.ik.compiled import warm_up
 from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 
@@ -33,13 +35,17 @@ TABLE = 4096
 class IKChain:
     """What the solver precomputes for one (robot, frame): the joints that move it.
 
-    Built once per model and frame (``RobotModel.lazy``) and read-only afterwards.
+    Built once per model, frame and planning group (``RobotModel.lazy``) and read-only
+    afterwards. With ``joints`` (wire indices of a planning group's joints), only those among
+    the joints that move the frame are active.
     """
 
-    def __init__(self, robot: RobotModel, frame: str) -> None:
+    def __init__(self, robot: RobotModel, frame: str, joints: np.ndarray | None = None) -> None:
         self.frame = frame
         self.frame_id = robot.frame_id(frame)
         self.active = robot.supporting_joints(frame)  # wire indices
+        if joints is not None:
+            self.active = self.active[np.isin(self.active, joints)]
         joints = [robot.joints[i] for i in self.active]
         self.k = len(joints)
         self.cols = np.array([j.idx_v for j in joints], dtype=int)
@@ -131,10 +137,23 @@ class IKChain:
         return d, k_t, int(d.argmin())
 
 
-def ik_chain(robot: RobotModel, frame: str) -> IKChain:
-    """The cached :class:`IKChain` of ``frame`` (raises UnknownNameError for a bad frame)."""
+def ik_chain(robot: RobotModel, frame: str, group: Group | None = None) -> IKChain:
+    """The cached :class:`IKChain` of ``frame`` (raises UnknownNameError for a bad frame),
+    moving only ``group``'s joints when given (InvalidInputError naming ``group`` when none
+    of them moves the frame)."""
     robot.frame_id(frame)
-    return robot.lazy(f"ik.chain:{frame}", lambda r: IKChain(r, frame))
+    if group is None:
+        return robot.lazy(f"ik.chain:{frame}", lambda r: IKChain(r, frame))
+    support = robot.supporting_joints(frame)
+    if not np.isin(support, group.indices).any():
+        raise InvalidInputError(
+            f"no joint of group {group.name!r} ({', '.join(group.joints) or 'none'}) moves "
+            f"frame {frame!r}",
+            "group",
+        )
+    return robot.lazy(
+        f"ik.chain:{frame}|group:{group.name}", lambda r: IKChain(r, frame, group.indices)
+    )
 
 
 def k_smallest(d: np.ndarray, k: int) -> np.ndarray:

@@ -20,6 +20,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.groups import Group, expand, state_configuration
 from app.kinematics.models import MAX_POSITION, RobotModel, check_bounded
 from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
 
@@ -65,6 +66,9 @@ class IKOptions:
         How many distinct solutions to collect (sorted by distance to the seed).
     analytic
         Try closed forms (:mod:`app.kinematics.analytic_ik`) first where the chain admits one.
+    group
+        A planning group (:mod:`app.kinematics.groups`): only its joints among those that
+        move the frame are active, and the default frame is its tip.
     """
 
     frame: str | None = None
@@ -75,6 +79,7 @@ class IKOptions:
     max_iterations: int | None = None
     num_solutions: int = 1
     analytic: bool = True
+    group: str | None = None
 
     def __post_init__(self) -> None:
         mode = self.mode
@@ -229,3 +234,22 @@ def seed_configuration(
     if isinstance(seed, Mapping):
         return robot.apply_joint_map(robot.mid_range(), seed, "seed")
     return robot.configuration(seed, field="seed")
+
+
+def group_seed(
+    robot: RobotModel,
+    grp: Group | None,
+    seed: Sequence[float] | np.ndarray | Mapping[str, float] | str | None,
+    field: str = "seed",
+) -> np.ndarray:
+    """A seed with planning groups and named states (:func:`seed_configuration` otherwise).
+
+    A string names a state of the SRDF (``"ready"``: its joints set, the others at the
+    middle of their limits); with a group, a list may hold the group's joints only (the
+    others at the middle of their limits).
+    """
+    if isinstance(seed, str):
+        return state_configuration(robot, seed, grp, robot.mid_range(), field)
+    if grp is not None and seed is not None and not isinstance(seed, Mapping):
+        return expand(robot, grp, seed, robot.mid_range(), field)
+    return seed_configuration(robot, seed)
