@@ -205,7 +205,8 @@ class UrdfUpload(Schema):
         None,
         max_length=256,
         description="Default end-effector frame (default: the parent_link of the SRDF's first "
-        "end effector, else the deepest link).",
+        "end effector, else the tip of the longest serial chain that is not a gripper finger; "
+        "see end_effector in GET /robots/{robot_id}).",
     )
     description: Text = Field("", max_length=1000, description="Short description.")
 

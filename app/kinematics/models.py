@@ -27,8 +27,8 @@ import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
-from app.kinematics.tip import bare_links, default_tip
 from app.kinematics.semantics import parse_semantics
+from app.kinematics.tip import bare_links, default_tip
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
