@@ -104,7 +104,10 @@ def test_default_tip_rule_1(robot: RobotModel) -> None:
     assert robot.ee_frame == "tool"  # the first end effector's parent_link
     assert RobotModel("g", URDF, srdf_text=SRDF, ee_frame="l2").ee_frame == "l2"
     plain = RobotModel("g", URDF)
-    assert plain.ee_frame != "tool" and robot_groups(plain) == {}
+    assert plain.ee_frame == "tool" and robot_groups(plain) == {}  # rules 2-3 pick it too
+    # An end effector on l2, which rules 2-3 would never pick: rule 1 decides.
+    on_l2 = srdf('<end_effector name="e" parent_link="l2" group="upper"/>' + SRDF[16:-8])
+    assert RobotModel("g", URDF, srdf_text=on_l2).ee_frame == "l2"
 
 
 def test_group_configuration(robot: RobotModel) -> None:
