@@ -147,7 +147,7 @@ def test_find_of_another_package_is_refused(tmp_path: Path) -> None:
     "expression",
     [
         "''.__class__",
-        "'{0.__class__}'.format(1)",
+        "python.str.format",
         "python.vars(math)",
         "python.type(1)",
         "(x for x in [1]).gi_frame.f_back",
