@@ -28,8 +28,9 @@ from __future__ import annotations
 
 import math
 import os
+import tempfile
 from pathlib import Path
-from xml.etree.ElementTree import Element
+from xml.etree.ElementTree import Element, tostring
 
 import numpy as np
 import pinocchio as pin
@@ -97,40 +98,68 @@ def _check_joint_types(tree: Element, rel: str) -> None:
             )
 
 
-def check_mjcf_files(root: Path, description: str, limits: XmlLimits) -> tuple[Path, list[Element]]:
-    """Check the document, its includes and every file and directory it names; return the
-    description's real path and the parsed files (the description first).
+def _expand(root: Path, base: Path, path: Path, limits: XmlLimits, count: list[int]) -> Element:
+    """The literal tree of ``path`` with every ``<include>`` replaced by the children of the
+    included file's root (MuJoCo's rule; Pinocchio's parser does not follow includes)."""
+    tree = _read(root, path, limits)
+    _check_joint_types(tree, path.relative_to(root).as_posix())
+    for parent in list(tree.iter()):
+        children = list(parent)
+        if not any(child.tag == "include" for child in children):
+            continue
+        merged: list[Element] = []
+        for child in children:
+            if child.tag != "include":
+                merged.append(child)
+                continue
+            count[0] += 1
+            if count[0] > MAX_INCLUDES:
+                raise InvalidInputError(
+                    f"more than {MAX_INCLUDES} <include>s (or an include cycle)", FIELD
+                )
+            target = _resolve(root, base, child.get("file", ""), "<include file>")
+            merged.extend(list(_expand(root, base, target, limits, count)))
+        parent[:] = merged
+    return tree
 
-    Raises :class:`InvalidInputError` (field ``description``)."""
+
+def check_mjcf_files(root: Path, description: str, limits: XmlLimits) -> tuple[Path, Element]:
+    """Check the document, its includes and every file and directory it names.
+
+    Returns the description's real path and the document with its includes merged and
+    the ``<compiler>``'s ``meshdir``/``texturedir`` made absolute (so that it can be
+    parsed from any directory). Raises :class:`InvalidInputError` (field ``description``).
+    """
     root = Path(os.path.realpath(root))
     main = _resolve(root, root, description, "description")
     base = main.parent
-    trees: list[tuple[Element, Path]] = []
-    pending = [main]
-    while pending:
-        path = pending.pop()
-        if len(trees) > MAX_INCLUDES:
-            raise InvalidInputError(f"more than {MAX_INCLUDES} included files", FIELD)
-        tree = _read(root, path, limits)
-        trees.append((tree, path))
-        for element in tree.iter("include"):
-            pending.append(_resolve(root, base, element.get("file", ""), "<include file>"))
+    tree = _expand(root, base, main, limits, [0])
+    if sum(1 for _ in tree.iter()) > limits.max_elements:
+        raise InvalidInputError(
+            f"more than {limits.max_elements} XML elements with the includes "
+            "(DENAVIT_MAX_XML_ELEMENTS)",
+            FIELD,
+        )
     dirs: dict[str, Path] = {}
-    for tree, path in trees:
-        _check_joint_types(tree, path.relative_to(root).as_posix())
-        for compiler in tree.iter("compiler"):
-            for attr in ("meshdir", "assetdir", "texturedir"):
-                if compiler.get(attr) is not None:
-                    dirs[attr] = _resolve(root, base, compiler.get(attr, ""), f"<compiler {attr}>")
-    for tree, _ in trees:
-        for element in tree.iter():
-            value = element.get("file")
-            if value is None or element.tag == "include":
-                continue
-            key = "texturedir" if element.tag == "texture" else "meshdir"
-            folder = dirs.get(key, dirs.get("assetdir", base))
-            _resolve(root, folder, value, f"<{element.tag} file>")
-    return main, [tree for tree, _ in trees]
+    compilers = list(tree.iter("compiler"))
+    for compiler in compilers:
+        for attr in ("meshdir", "assetdir", "texturedir"):
+            if compiler.get(attr) is not None:
+                dirs[attr] = _resolve(root, base, compiler.get(attr, ""), f"<compiler {attr}>")
+    for element in tree.iter():
+        value = element.get("file")
+        if value is None:
+            continue
+        key = "texturedir" if element.tag == "texture" else "meshdir"
+        _resolve(root, dirs.get(key, dirs.get("assetdir", base)), value, f"<{element.tag} file>")
+    if not compilers:
+        compilers = [Element("compiler")]
+        tree.insert(0, compilers[0])
+    for compiler in compilers:
+        compiler.attrib.pop("assetdir", None)
+        for key in ("meshdir", "texturedir"):
+            compiler.set(key, str(dirs.get(key, dirs.get("assetdir", base))))
+    return main, tree
 
 
 def _numbers(element: Element, attr: str, count: int) -> list[float] | None:
@@ -154,18 +183,17 @@ def _axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
     return pin.AngleAxis(angle, axis / np.linalg.norm(axis)).matrix()
 
 
-def root_body_pose(trees: list[Element]) -> pin.SE3:
+def root_body_pose(tree: Element) -> pin.SE3:
     """The pose of the one body under ``<worldbody>`` as MuJoCo places it (``pos`` and
     ``quat``, ``euler`` or ``axisangle``, in the ``<compiler>``'s angle unit and Euler
     sequence). Pinocchio's MJCF parser reads only the first body under ``<worldbody>`` and,
     when that body has no joint, drops its pose: the URDF puts it back. More than one
     top-level body, or ``xyaxes``/``zaxis`` on it, is refused."""
     degree, seq = True, "xyz"
-    for tree in trees:
-        for compiler in tree.iter("compiler"):
-            degree = compiler.get("angle", "degree" if degree else "radian") == "degree"
-            seq = compiler.get("eulerseq", seq)
-    bodies = [b for tree in trees for w in tree.iter("worldbody") for b in w.findall("body")]
+    for compiler in tree.iter("compiler"):
+        degree = compiler.get("angle", "degree" if degree else "radian") == "degree"
+        seq = compiler.get("eulerseq", seq)
+    bodies = [b for w in tree.iter("worldbody") for b in w.findall("body")]
     if len(bodies) != 1:
         raise InvalidInputError(
             f"an arm needs exactly one <body> directly under <worldbody>, found {len(bodies)} "
@@ -318,16 +346,20 @@ def mjcf_to_urdf(root: Path, description: str, limits: XmlLimits) -> str:
     Raises :class:`~app.kinematics.errors.InvalidInputError` (field ``description``; a
     joint that is not a hinge or slide names the joint and its type).
     """
-    main, trees = check_mjcf_files(root, description, limits)
-    root_pose = root_body_pose(trees)
-    try:
-        model = pin.buildModelFromMJCF(str(main))
-        geoms = {
-            kind: pin.buildGeomFromMJCF(model, str(main), kind)
-            for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL)
-        }
-    except (RuntimeError, ValueError, IndexError, KeyError) as exc:
-        raise InvalidInputError(f"not a valid MJCF model: {exc}"[:500], FIELD) from None
+    main, tree = check_mjcf_files(root, description, limits)
+    root_pose = root_body_pose(tree)
+    with tempfile.TemporaryDirectory(prefix="denavit-mjcf-") as tmp:
+        merged = Path(tmp) / "model.xml"
+        merged.write_bytes(tostring(tree, encoding="utf-8"))
+        try:
+            model = pin.buildModelFromMJCF(str(merged))
+            geoms = {
+                kind: pin.buildGeomFromMJCF(model, str(merged), kind)
+                for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL)
+            }
+        except (RuntimeError, ValueError, IndexError, KeyError) as exc:
+            message = " ".join(str(exc).split("message:")[-1].split())
+            raise InvalidInputError(f"not a valid MJCF model: {message}"[:500], FIELD) from None
     return _urdf(model, geoms, main.parent, root_pose)
 
 
