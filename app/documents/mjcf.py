@@ -81,7 +81,45 @@ def _read(root: Path, path: Path, limits: XmlLimits) -> Element:
         raise InvalidInputError(f"{rel}: {exc.message}", FIELD) from None
 
 
+_POSE = {"pos": (3,), "quat": (4,), "euler": (3,), "axisangle": (4,), "xyaxes": (6,), "zaxis": (3,)}
+#: Numeric attributes checked per element (Pinocchio's parser reads a malformed number as
+#: 0 or garbage without a word): attribute -> allowed counts.
+_NUMERIC: dict[str, dict[str, tuple[int, ...]]] = {
+    "body": _POSE,
+    "joint": {"pos": (3,), "axis": (3,), "range": (2,), "ref": (1,)},
+    "geom": {**_POSE, "size": (1, 2, 3), "fromto": (6,), "mass": (1,)},
+    "inertial": {**_POSE, "mass": (1,), "diaginertia": (3,), "fullinertia": (6,)},
+    "mesh": {"scale": (3,)},
+}
+
+
+def _check_numbers(tree: Element, rel: str) -> None:
+    """Every numeric attribute Pinocchio reads is a list of finite numbers of the right
+    length; joint axes are not zero and ranges not reversed."""
+    for element in tree.iter():
+        for attr, counts in _NUMERIC.get(element.tag, {}).items():
+            raw = element.get(attr)
+            if raw is None:
+                continue
+            try:
+                values = [float(v) for v in raw.split()]
+            except ValueError:
+                values = []
+            name = element.get("name")
+            shown = f"{rel}: <{element.tag}{f' name={name!r}' if name else ''} {attr}={raw[:60]!r}>"
+            if len(values) not in counts or not all(math.isfinite(v) for v in values):
+                wanted = " or ".join(map(str, counts))
+                raise InvalidInputError(f"{shown}: expected {wanted} finite numbers", FIELD)
+            if attr in ("size", "mass", "diaginertia") and min(values) < 0:
+                raise InvalidInputError(f"{shown}: must not be negative", FIELD)
+            if element.tag == "joint" and attr == "axis" and not any(values):
+                raise InvalidInputError(f"{shown}: the axis is the zero vector", FIELD)
+            if attr == "range" and values[0] > values[1]:
+                raise InvalidInputError(f"{shown}: lower bound above the upper one", FIELD)
+
+
 def _check_joint_types(tree: Element, rel: str) -> None:
+    _check_numbers(tree, rel)
     for element in tree.iter():
         if element.tag == "freejoint":
             name = element.get("name") or "(unnamed)"
@@ -221,6 +259,8 @@ def root_body_pose(tree: Element) -> pin.SE3:
 
 
 def _num(x: float) -> str:
+    if not math.isfinite(x):
+        raise InvalidInputError(f"the model has a non-finite value ({x!r})", FIELD)
     return repr(float(x)) if x != 0 else "0.0"
 
 
@@ -357,8 +397,9 @@ def mjcf_to_urdf(root: Path, description: str, limits: XmlLimits) -> str:
                 kind: pin.buildGeomFromMJCF(model, str(merged), kind)
                 for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL)
             }
-        except (RuntimeError, ValueError, IndexError, KeyError) as exc:
+        except Exception as exc:  # noqa: BLE001 - whatever the parser throws: the document
             message = " ".join(str(exc).split("message:")[-1].split())
+            message = message.replace(f"{os.path.realpath(root)}/", "").replace(f"{tmp}/", "")
             raise InvalidInputError(f"not a valid MJCF model: {message}"[:500], FIELD) from None
     return _urdf(model, geoms, main.parent, root_pose)
 

@@ -288,3 +288,31 @@ def test_an_unlimited_slide_and_two_root_bodies_are_refused(tmp_path: Path) -> N
 def test_xml_limits_apply_to_the_document(tmp_path: Path) -> None:
     with pytest.raises(InvalidInputError, match="DENAVIT_MAX_XML_ELEMENTS"):
         mjcf_to_urdf(tmp_path, _write(tmp_path, ARM), XmlLimits(max_elements=10))
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "shown"),
+    [
+        ('<body name="link4" pos="0 0 0.2"', '<body name="link4" pos="x 0 0.2"', "pos='x 0 0.2'"),
+        ('euler="-30 0 15"', 'euler="-30 0"', "euler='-30 0'"),
+        ('<joint name="j4" axis="0 0 -1"', '<joint name="j4" axis="0 0 0"', "zero vector"),
+        ('range="-120 120"', 'range="120 -120"', "lower bound"),
+        ('size="0.03" mass="0.7"', 'size="-0.03" mass="0.7"', "negative"),
+        ('size="0.03" mass="0.7"', 'size="0.03" mass="nan"', "mass='nan'"),
+    ],
+)
+def test_malformed_numbers_are_refused(tmp_path: Path, old: str, new: str, shown: str) -> None:
+    # Pinocchio's parser would read them as 0 or uninitialised memory without a word
+    assert old in ARM
+    with pytest.raises(InvalidInputError) as info:
+        mjcf_to_urdf(tmp_path, _write(tmp_path, ARM.replace(old, new)), XmlLimits())
+    assert shown in info.value.message and "robot/arm.xml" in info.value.message
+
+
+def test_parser_errors_do_not_show_server_paths(tmp_path: Path) -> None:
+    text = ARM.replace(
+        "<worldbody>", '<asset><mesh name="m" file="missing.stl"/></asset><worldbody>'
+    ).replace('<geom type="sphere" size="0.02"/>', '<geom type="mesh" mesh="m"/>')
+    with pytest.raises(InvalidInputError) as info:
+        mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits())
+    assert "missing.stl" in info.value.message and str(tmp_path) not in info.value.message
