@@ -98,7 +98,7 @@ def confine(path: str | Path, what: str) -> Path:
     except (OSError, ValueError) as exc:
         raise Refusal(f"{what} {str(path)!r}: {exc}") from None
     if real != root and root not in real.parents:
-        raise Refusal(f"{what} {str(path)!r} is outside the package")
+        raise Refusal(f"{what} {_rel(path)!r} is outside the package")
     try:
         st = real.stat()
     except OSError:
@@ -344,8 +344,10 @@ def _message(exc: BaseException) -> tuple[str, str]:
     else:
         text = str(exc) or type(exc).__name__
         text = re.sub(r"<class '[\w.]+'>: ", "", text)
+    if _STATE is not None:
+        text = text.replace(f"{_STATE.root}/", "")
     text = " ".join(text.split())[:2000]
-    where = _where()
+    where = _where() if _STATE is not None else ""
     return (f"{where}: {text}" if where else text), field
 
 
