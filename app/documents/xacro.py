@@ -203,7 +203,7 @@ def expand_xacro(
         "args": checked_args,
         "limits": asdict(limits),
         "memory_bytes": int(memory_bytes),
-        "cpu_s": max(1, math.ceil(timeout_s)),
+        "cpu_s": math.ceil(1.5 * timeout_s) + 1,  # a backstop: the wall-clock timeout rules
         "max_output_chars": int(max_output_chars),
     }
     answer = _run_child(request, timeout_s, 4 * max_output_chars + 1024)
