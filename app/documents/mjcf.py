@@ -121,6 +121,12 @@ def _check_numbers(tree: Element, rel: str) -> None:
 def _check_joint_types(tree: Element, rel: str) -> None:
     _check_numbers(tree, rel)
     for element in tree.iter():
+        if element.tag in ("frame", "replicate", "attach"):
+            raise InvalidInputError(
+                f"{rel}: <{element.tag}> is not supported (Pinocchio's MJCF parser skips what "
+                "it holds); write its bodies out",
+                FIELD,
+            )
         if element.tag == "freejoint":
             name = element.get("name") or "(unnamed)"
             raise InvalidInputError(

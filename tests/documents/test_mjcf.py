@@ -316,3 +316,16 @@ def test_parser_errors_do_not_show_server_paths(tmp_path: Path) -> None:
     with pytest.raises(InvalidInputError) as info:
         mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits())
     assert "missing.stl" in info.value.message and str(tmp_path) not in info.value.message
+
+
+def test_frame_elements_are_refused(tmp_path: Path) -> None:
+    # Pinocchio's parser silently skips the bodies inside a <frame>
+    text = ARM.replace('<body name="link4"', '<frame pos="0 0 0"><body name="link4"').replace(
+        '<body name="tool" pos="0 0 0.05" euler="0 90 0"/>\n              </body>\n'
+        "            </body>",
+        '<body name="tool" pos="0 0 0.05" euler="0 90 0"/>\n              </body>\n'
+        "            </body></frame>",
+    )
+    assert "</frame>" in text
+    with pytest.raises(InvalidInputError, match="<frame>"):
+        mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits())
