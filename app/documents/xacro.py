@@ -40,7 +40,7 @@ XACRO_MAX_OUTPUT_CHARS = 8 * 1024 * 1024
 MAX_ARGS = 256
 MAX_ARG_CHARS = 4096
 _ARG_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_.\-]{0,127}$")
-_CHILD = "from app.documents.xacro_child import main; main()"
+_CHILD = "from app.documents.xacro_child import main; main({pid})"
 
 
 def _arg_value(name: str, value: object) -> str:
@@ -100,7 +100,8 @@ def _description_path(root: Path, description: str) -> Path:
 
 def _run_child(request: dict[str, object], timeout_s: float, max_output: int) -> dict[str, str]:
     """Run the child with ``request`` and return its answer (bounded in time and size)."""
-    code = f"import sys; sys.path.insert(0, {str(Path(app.__file__).parent.parent)!r}); {_CHILD}"
+    path = str(Path(app.__file__).parent.parent)
+    code = f"import sys; sys.path.insert(0, {path!r}); {_CHILD.format(pid=os.getpid())}"
     proc = subprocess.Popen(
         [sys.executable, "-I", "-c", code],
         stdin=subprocess.PIPE,

@@ -280,6 +280,14 @@ def _children(pid: int) -> list[int]:
     return out
 
 
+def _cpu_s(pid: int) -> float:
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except OSError:
+        return 0.0
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def _alive(pid: int) -> bool:
     try:
         state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
@@ -307,7 +315,8 @@ def test_the_child_dies_with_its_parent(tmp_path: Path) -> None:
             child = kids[0] if kids else None
             time.sleep(0.05)
         assert child is not None, "the expansion's child process never started"
-        time.sleep(0.5)  # let it get past its start-up (it sets the death signal first)
+        while _cpu_s(child) < 1.5 and time.monotonic() < deadline:
+            time.sleep(0.05)  # until it is inside the expansion's endless sum
         parent.send_signal(signal.SIGKILL)
         parent.wait()
         deadline = time.monotonic() + 30
