@@ -32,7 +32,8 @@ import app
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
-#: Default bounds of one expansion (the route may pass others, e.g. from settings).
+#: Default bounds of one expansion (the route passes the settings
+#: ``DENAVIT_XACRO_TIMEOUT_S``, ``DENAVIT_XACRO_MEMORY_BYTES``, ``DENAVIT_XACRO_MAX_OUTPUT_CHARS``).
 XACRO_TIMEOUT_S = 20.0
 XACRO_MEMORY_BYTES = 512 * 1024 * 1024
 XACRO_MAX_OUTPUT_CHARS = 8 * 1024 * 1024
