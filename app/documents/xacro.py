@@ -1,7 +1,7 @@
 """Expanding a client's ``.urdf.xacro`` into URDF text, confined to its package.
 
 The expansion runs in a child process of its own (:mod:`app.documents.xacro_child`),
-started with ``python -I`` and an empty environment, which dies with the thread that
+started with ``python -I -B`` and an empty environment, which dies with the thread that
 waits for it (``PR_SET_PDEATHSIG``, as :mod:`app.kinematics.procwatch` does for
 reachability builds) and is bounded: wall-clock time (killed after ``timeout_s``), CPU
 time, address space (``memory_bytes`` over what it uses at start), no file writes, no new
@@ -104,7 +104,7 @@ def _run_child(request: dict[str, object], timeout_s: float, max_output: int) ->
     path = str(Path(app.__file__).parent.parent)
     code = f"import sys; sys.path.insert(0, {path!r}); {_CHILD.format(pid=os.getpid())}"
     proc = subprocess.Popen(
-        [sys.executable, "-I", "-c", code],
+        [sys.executable, "-I", "-B", "-c", code],  # isolated, writes no bytecode
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
