@@ -72,6 +72,21 @@ class Settings(BaseSettings):
         description="Most movable joints in an uploaded URDF (Pinocchio's per-thread Data "
         "grows as ~34·dof³ bytes: 15 MB at 64, 80 MB at 128, 570 MB at 256).",
     )
+    xacro_timeout_s: float = Field(
+        20.0,
+        gt=0,
+        le=3600,
+        allow_inf_nan=False,
+        description="Wall-clock limit of one xacro expansion (its child process is killed).",
+    )
+    xacro_memory_bytes: int = Field(
+        512 * 1024 * 1024,
+        ge=32 * 1024 * 1024,
+        description="Address space a xacro expansion's child process may add (RLIMIT_AS).",
+    )
+    xacro_max_output_chars: int = Field(
+        8 * 1024 * 1024, ge=1024, description="Longest URDF a xacro expansion may produce."
+    )
     ik_max_request_s: float = Field(
         30.0,
         gt=0,
