@@ -139,6 +139,10 @@ def _loc(loc: tuple[Any, ...] | list[Any]) -> str:
     return ".".join(parts) or "body"
 
 
+#: Fields that are path parameters: an unknown name there is a missing resource (404);
+#: an unknown name anywhere in a body (a frame, a joint, a group, a scene) is a 422.
+PATH_FIELDS = frozenset({"robot_id", "job_id", "map_id", "name", "path"})
+
 _STATUS = {
     UnknownNameError: (404, "unknown-name"),
     ConflictError: (409, "conflict"),
@@ -154,6 +158,8 @@ def install(app: FastAPI) -> None:
     @app.exception_handler(KinematicsError)
     async def _kinematics(request: Request, exc: KinematicsError) -> Response:
         status, kind = _STATUS.get(type(exc), (422, "invalid-input"))
+        if isinstance(exc, UnknownNameError) and exc.field not in PATH_FIELDS:
+            status = 422  # a name in the body (frame, joint, group, scene): invalid input
         detail = f"{exc.field}: {exc.message}" if exc.field else exc.message
         return problem(
             status,

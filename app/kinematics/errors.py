@@ -25,15 +25,30 @@ class InvalidInputError(KinematicsError):
 
 
 class UnknownNameError(KinematicsError):
-    """A robot, frame or joint name that does not exist, with close matches."""
+    """A robot, frame or joint name that does not exist, with close matches.
 
-    def __init__(self, kind: str, name: str, field: str, candidates: Iterable[str]) -> None:
+    ``list_known``: name every candidate in the message (short lists such as a robot's
+    joints), not only the close matches.
+    """
+
+    def __init__(
+        self,
+        kind: str,
+        name: str,
+        field: str,
+        candidates: Iterable[str],
+        *,
+        list_known: bool = False,
+    ) -> None:
         self.kind = kind
         self.name = name
-        self.suggestions = difflib.get_close_matches(name, list(candidates), n=5, cutoff=0.5)
+        known = list(candidates)
+        self.suggestions = difflib.get_close_matches(name, known, n=5, cutoff=0.5)
         hint = (
             f"; did you mean {', '.join(map(repr, self.suggestions))}?" if self.suggestions else ""
         )
+        if list_known:
+            hint += f" (known: {', '.join(known) or 'none'})"
         super().__init__(f"unknown {kind} {name!r}{hint}", field)
 
 

@@ -339,7 +339,7 @@ class RobotModel:
             return self._joint_index[name]
         except KeyError:
             raise UnknownNameError(
-                "joint", name, field, self.joint_names + list(self._mimic_by_name)
+                "joint", name, field, self.joint_names + list(self._mimic_by_name), list_known=True
             ) from None
 
     def supporting_joints(self, frame: str) -> np.ndarray:

@@ -119,7 +119,7 @@ def test_statics_planar_residual(planar_client):
         ("manipulability", {"q": Q_UR5, "part": "elbow"}, 422, "part"),
         ("manipulability", {"q": Q_UR5, "reference": "moon"}, 422, "reference"),
         ("manipulability", {"q": Q_UR5, "relative_tolerance": -1}, 422, "relative_tolerance"),
-        ("manipulability", {"q": Q_UR5, "frame": "nope"}, 404, "frame"),
+        ("manipulability", {"q": Q_UR5, "frame": "nope"}, 422, "frame"),
         ("manipulability", {"q": Q_UR5, "frame": "base_link"}, 422, "frame"),
         ("manipulability", {"q": [1.0]}, 422, "q"),
         ("manipulability", {"q": Q_UR5, "bogus": 1}, 422, "bogus"),
@@ -130,7 +130,7 @@ def test_statics_planar_residual(planar_client):
         ("statics", {"q": Q_UR5, "wrench": [0] * 6, "torques": [0] * 6}, 422, "wrench"),
         ("statics", {"q": Q_UR5, "wrench": [0] * 5}, 422, "wrench"),
         ("statics", {"q": Q_UR5, "torques": [0] * 5}, 422, "torques"),
-        ("statics", {"q": Q_UR5, "wrench": [0] * 6, "frame": "nope"}, 404, "frame"),
+        ("statics", {"q": Q_UR5, "wrench": [0] * 6, "frame": "nope"}, 422, "frame"),
     ],
 )
 def test_bad_inputs(client, path, body, status, field):
@@ -161,7 +161,7 @@ def test_batch_body_errors(client):
     r = client.post(url, json=[1, 2])
     assert r.status_code == 422
     r = client.post(url, json={"configurations": [Q_UR5], "rows": ["vx", "vy"], "frame": "x"})
-    assert r.status_code == 404 and r.json()["field"] == "frame"
+    assert r.status_code == 422 and r.json()["field"] == "frame"
 
 
 @pytest.mark.parametrize("t2", [0.5, -2.0, 0.0, math.pi])

@@ -171,8 +171,8 @@ def test_bad_request_fields(client, extra: dict, field: str) -> None:
     assert r.json()["field"] == field
 
 
-def test_unknown_scene_and_robot_are_404(client) -> None:
-    problem(client.post("/robots/panda/collisions", json={"scene": "nowhere"}), 404, "scene")
+def test_unknown_scene_is_422_and_unknown_robot_404(client) -> None:
+    problem(client.post("/robots/panda/collisions", json={"scene": "nowhere"}), 422, "scene")
     problem(client.post("/robots/pandaa/collisions", json={}), 404, "robot_id")
 
 

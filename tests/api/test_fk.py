@@ -11,6 +11,11 @@ from app.kinematics.rotations import quaternion_to_matrix, rpy_to_matrix
 from tests.helpers import problem
 from tests.kinematics.reference import reference_pose
 
+UR5_JOINTS = [
+    f"{j}_joint"
+    for j in ("shoulder_pan", "shoulder_lift", "elbow", "wrist_1", "wrist_2", "wrist_3")
+]
+
 PANDA_READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
 
 
@@ -117,13 +122,13 @@ def test_unknown_robot(client) -> None:
 
 def test_unknown_frame(client) -> None:
     body = problem(
-        client.post("/robots/panda/fk", json={"frames": ["panda_link88"]}), 404, "frames.0"
+        client.post("/robots/panda/fk", json={"frames": ["panda_link88"]}), 422, "frames.0"
     )
     assert "panda_link8" in body["suggestions"]
-    problem(client.post("/robots/panda/jacobian", json={"frame": "x"}), 404, "frame")
+    problem(client.post("/robots/panda/jacobian", json={"frame": "x"}), 422, "frame")
     problem(
         client.post("/robots/ur5/fk/batch", json={"configurations": [[0] * 6], "frame": "tool"}),
-        404,
+        422,
         "frame",
     )
 
@@ -131,10 +136,12 @@ def test_unknown_frame(client) -> None:
 def test_unknown_joint(client) -> None:
     body = problem(
         client.post("/robots/ur5/fk", json={"joint_positions": {"elbow": 1}}),
-        404,
+        422,
         "joint_positions.elbow",
     )
     assert "elbow_joint" in body["suggestions"]
+    # The message lists every known joint (a client building a JointState can fix its names).
+    assert all(name in body["detail"] for name in UR5_JOINTS), body["detail"]
 
 
 def test_wrong_length(client) -> None:

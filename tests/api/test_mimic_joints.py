@@ -65,7 +65,7 @@ def test_inconsistent_follower_is_a_422_naming_it(client, path: str, body: dict,
 
 def test_unknown_joint_still_refused_with_followers_suggested(client) -> None:
     r = client.post("/robots/panda/fk", json={"joint_positions": {"panda_finger_joint": 0.0}})
-    body = problem(r, 404, "joint_positions.panda_finger_joint")
+    body = problem(r, 422, "joint_positions.panda_finger_joint")
     assert {"panda_finger_joint1", "panda_finger_joint2"} <= set(body["suggestions"])
 
 

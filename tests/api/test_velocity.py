@@ -63,7 +63,7 @@ def test_inverse_at_a_singularity_reports_damping(client) -> None:
         ({"q": Q_UR5, "joint_velocities": [0] * 5}, 422, "joint_velocities"),
         ({"q": Q_UR5[:5], "joint_velocities": [0] * 6}, 422, "q"),
         ({"q": Q_UR5, "twist": [0] * 6, "reference": "world_spatial"}, 422, "reference"),
-        ({"q": Q_UR5, "twist": [0] * 6, "frame": "nope"}, 404, "frame"),
+        ({"q": Q_UR5, "twist": [0] * 6, "frame": "nope"}, 422, "frame"),
         ({"q": Q_UR5, "twist": [0] * 6, "singular_threshold": 0}, 422, "singular_threshold"),
         ({"q": Q_UR5, "twist": [0] * 6, "mode": "all"}, 422, "mode"),
     ],
