@@ -9,6 +9,7 @@ from app.api import (
     health,
     ik,
     jacobian,
+    packages,
     reachability,
     robots,
     scenes,
@@ -19,6 +20,7 @@ from app.api import (
 ROUTERS = [
     health.router,
     robots.router,
+    packages.router,
     fk.router,
     jacobian.router,
     analysis.router,
