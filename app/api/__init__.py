@@ -19,8 +19,8 @@ from app.api import (
 #: Routers mounted by :func:`app.main.create_app`, in documentation order.
 ROUTERS = [
     health.router,
+    packages.router,  # before robots: /robots/package is not the robot 'package'
     robots.router,
-    packages.router,
     fk.router,
     jacobian.router,
     analysis.router,

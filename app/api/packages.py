@@ -171,7 +171,7 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
             field="body",
             instance=request.url.path,
         )
-    async with form:
+    try:
         fields: dict[str, Any] = {}
         archive = None
         for key, value in form.multi_items():
@@ -189,11 +189,12 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
         if archive is None:
             raise InvalidInputError("the archive file is required", "archive")
         return _created(await offload(_add_package, reg, parsed, archive.file))
+    finally:
+        await form.close()
 
 
-@router.api_route(
+@router.get(
     "/{robot_id}/files/{path:path}",
-    methods=["GET", "HEAD"],
     operation_id="get_robot_file",
     response_class=Response,
     responses={

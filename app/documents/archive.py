@@ -187,7 +187,7 @@ def _unpack_zip(source: BinaryIO, out: _Extractor) -> None:
             mode = info.external_attr >> 16
             if stat.S_ISLNK(mode):
                 raise _refuse("symbolic links are not allowed", name)
-            if mode and not (stat.S_ISREG(mode) or stat.S_ISDIR(mode)):
+            if stat.S_IFMT(mode) not in (0, stat.S_IFREG, stat.S_IFDIR):  # 0: no Unix mode
                 raise _refuse("only regular files and directories are allowed", name)
             if info.flag_bits & 0x1:
                 raise _refuse("encrypted entries are not supported", name)
