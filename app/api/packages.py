@@ -162,7 +162,7 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
         )
     request._body = body  # the form parser reads the body already counted
     try:
-        form = await request.form(max_files=1, max_fields=len(_TEXT_FIELDS))
+        form = await request.form(max_files=8, max_fields=len(_TEXT_FIELDS) + 8)
     except Exception as exc:  # python-multipart's and Starlette's parse errors
         return problem(
             400,
