@@ -58,7 +58,7 @@ def zip_bytes(files: Mapping[str, bytes], *, modes: Mapping[str, int] | None = N
 def tar_gz_bytes(files: Mapping[str, bytes], links: Mapping[str, tuple[bytes, str]] = {}) -> bytes:  # noqa: B006
     """A tar.gz of ``files``, plus ``links``: name → (tar type, link target)."""
     buf = io.BytesIO()
-    with tarfile.open(fileobj=buf, mode="w:gz") as tf:
+    with tarfile.open(fileobj=buf, mode="w:gz", compresslevel=1) as tf:
         for name, data in files.items():
             info = tarfile.TarInfo(name)
             info.size = len(data)
