@@ -34,7 +34,7 @@ from xml.etree.ElementTree import tostring
 
 from app.documents.archive import member_parts
 from app.documents.mjcf import mjcf_to_urdf
-from app.documents.urdf import check_resource_uri
+from app.documents.urdf import check_resource_uri, resource_elements
 from app.documents.xacro import expand_xacro
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.meshes import MESH_FORMATS
@@ -192,12 +192,7 @@ def rewrite_references(urdf: str, resolver: _Resolver, limits: XmlLimits) -> Pac
     """The URDF with every mesh/texture reference in canonical form, and its meshes."""
     root = parse_literal_xml(urdf, resolver.field, limits)
     meshes: dict[str, Path] = {}
-    for element in root.iter():
-        if element.tag not in ("mesh", "texture"):
-            continue
-        uri = element.get("filename")
-        if uri is None:
-            continue
+    for element, uri in resource_elements(root):
         canonical, file = resolver.resolve(element.tag, uri)
         element.set("filename", canonical)
         if element.tag == "mesh":

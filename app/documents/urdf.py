@@ -9,7 +9,7 @@ as it is for Pinocchio, and a namespace trick cannot hide an element from a chec
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from xml.etree.ElementTree import Element
 
@@ -142,13 +142,17 @@ def _check_numbers(root: Element, field: str) -> None:
                 )
 
 
-def _check_resources(root: Element, field: str) -> None:
+def resource_elements(root: Element) -> Iterator[tuple[Element, str]]:
+    """Every ``<mesh>`` and ``<texture>`` element with a ``filename``, and that filename."""
     for element in root.iter():
-        if element.tag not in ("mesh", "texture"):
-            continue
-        uri = element.get("filename")
-        if uri is None:
-            continue
+        if element.tag in ("mesh", "texture"):
+            uri = element.get("filename")
+            if uri is not None:
+                yield element, uri
+
+
+def _check_resources(root: Element, field: str) -> None:
+    for element, uri in resource_elements(root):
         reason = check_resource_uri(uri)
         if reason:
             raise InvalidInputError(
