@@ -38,7 +38,7 @@ class RobotSummaryOut(BaseModel):
 
     id: str = Field(description="Robot id, used in every /robots/{robot_id} URL.")
     name: str = Field(description="Human-readable name.")
-    source: str = Field(description="example-robot-data | dh | upload.")
+    source: str = Field(description="example-robot-data | dh | upload | package.")
     joints: int = Field(description="Number of actuated joints (length of a configuration).")
     description: str = Field("", description="Short description.")
 
