@@ -427,7 +427,7 @@ class Registry:
                 catalog=erd_share_dir(),
                 limits=self.limits.xml,
             )
-            check_documents(package.urdf, package.srdf, self.limits)
+            check_documents(package.urdf, package.srdf, self.limits, "description")
             robot = build_checked_model(
                 robot_id,
                 package.urdf,

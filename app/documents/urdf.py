@@ -297,13 +297,15 @@ def check_urdf_document(
         )
 
 
-def check_documents(urdf: str, srdf: str | None, limits: UrdfLimits) -> None:
+def check_documents(
+    urdf: str, srdf: str | None, limits: UrdfLimits, urdf_field: str = "urdf"
+) -> None:
     """The upload checks of a URDF (and its SRDF) within ``limits``: parsed with
     literal names as Pinocchio reads them, no DTD or entities, bounded work
     (:func:`check_urdf_document`, :func:`~app.documents.srdf.check_srdf_document`); raises
-    :class:`InvalidInputError` naming ``urdf`` or ``srdf``."""
-    root = parse_literal_xml(urdf, "urdf", limits.xml)
-    check_urdf_document(root, "urdf", limits)
+    :class:`InvalidInputError` naming ``urdf_field`` or ``srdf``."""
+    root = parse_literal_xml(urdf, urdf_field, limits.xml)
+    check_urdf_document(root, urdf_field, limits)
     if srdf is not None:
         links = {link.get("name", "") for link in root.findall("link")}
         check_srdf_document(srdf, links, "srdf", limits.xml)

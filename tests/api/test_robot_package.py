@@ -337,6 +337,18 @@ def test_bad_fields_are_4xx_naming_them(
     assert robots_dir_entries(settings) == []
 
 
+def test_a_bad_urdf_in_a_package_names_the_description(
+    client: TestClient, settings: Settings
+) -> None:
+    files = tiny_files()
+    files["robot.urdf"] = files["robot.urdf"].replace(b'type="revolute"', b'type="floating"')
+    body = problem(upload(client, zip_bytes(files)), 422, "description")
+    assert "floating" in body["detail"]
+    files["robot.urdf"] = b"<robot"
+    problem(upload(client, zip_bytes(files)), 422, "description")
+    assert robots_dir_entries(settings) == []
+
+
 def test_missing_archive_and_wrong_content_type(client: TestClient) -> None:
     form = (
         b'--b\r\nContent-Disposition: form-data; name="name"\r\n\r\nx\r\n'
