@@ -96,7 +96,10 @@ def package_names(root: Path, limits: XmlLimits) -> dict[str, str]:
             continue
         rel = manifest.relative_to(root).as_posix()
         _, text = _read_member(root, rel, "package.xml", "archive")
-        doc = parse_literal_xml(text, "archive", limits)
+        try:
+            doc = parse_literal_xml(text, "archive", limits)
+        except InvalidInputError as exc:
+            raise InvalidInputError(f"{rel}: {exc.message}", "archive") from None
         name = (doc.findtext("name") or "").strip()
         if doc.tag != "package" or not name:
             continue
