@@ -439,6 +439,7 @@ class Registry:
                 urdf_field="description",
             )
             check_mesh_files(package.meshes, "archive")
+            collision_model(robot)  # built (meshes in memory) before anything is stored
             robot.package_dirs = [str(store.root / robot_id), str(erd_share_dir())]
             meta = {
                 "name": robot_id,
@@ -451,7 +452,6 @@ class Registry:
             if package.srdf is not None:
                 files[SRDF_FILE] = package.srdf.encode()
             stored = store.create(robot_id, meta, files, tree=files_dir)
-        collision_model(robot)  # the meshes are in place: build the collision model now
         return self._stored(stored, robot)
 
     def files_root(self, robot_id: str) -> tuple[Path, str] | None:
