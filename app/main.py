@@ -27,6 +27,7 @@ from starlette.middleware.cors import CORSMiddleware
 from app import api, openapi
 from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
+from app.documents.archive import ArchiveLimits
 from app.documents.urdf import UrdfLimits
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import procwatch
@@ -98,7 +99,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_joints=settings.max_urdf_joints,
         max_dof=settings.max_robot_dof,
     )
-    app.state.registry = Registry(settings.data_dir, limits)
+    archive_limits = ArchiveLimits(
+        max_files=settings.max_package_files,
+        max_unpacked_bytes=settings.max_package_unpacked_bytes,
+    )
+    app.state.registry = Registry(settings.data_dir, limits, archive_limits)
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)

@@ -5,9 +5,10 @@ model is built on first use and cached. Sources:
 
 - ``example-robot-data`` and ``dh`` (built in): the catalog and DH tables of
   :mod:`app.catalog`.
-- ``dh`` and ``upload`` (user-added): robots imported from a DH table or uploaded as URDF,
-  checked by :mod:`app.documents` and kept in the data directory by
-  :class:`app.store.RobotStore`.
+- ``dh``, ``upload`` and ``package`` (user-added): robots imported from a DH table,
+  uploaded as URDF text, or uploaded as a description package (an archive with meshes,
+  whose files are stored with the robot under ``files/``), checked by
+  :mod:`app.documents` and kept in the data directory by :class:`app.store.RobotStore`.
 
 Several processes may serve the same data directory: the directory is the source of truth.
 Before a cached user-added robot is served, :meth:`RobotStore.token` (one ``stat`` and one
@@ -20,13 +21,24 @@ from __future__ import annotations
 
 import logging
 import threading
+from collections.abc import Mapping
 from pathlib import Path
+from typing import BinaryIO
 
 import yaml
 
 from app.catalog import DH_EE_FRAME, erd_share_dir, load_catalog, load_dh_builtins
+from app.documents.archive import ArchiveLimits, unpack_archive
 from app.documents.dh import MAX_DH_JOINTS, dh_error
+from app.documents.package import (
+    CATALOG_PACKAGE,
+    FILES_DIR,
+    FILES_PREFIX,
+    catalog_meshes,
+    read_package,
+)
 from app.documents.urdf import UrdfLimits, build_checked_model, check_documents
+from app.kinematics.collision import collision_model
 from app.kinematics.errors import (
     ConflictError,
     ForbiddenError,
@@ -34,6 +46,7 @@ from app.kinematics.errors import (
     KinematicsError,
     UnknownNameError,
 )
+from app.kinematics.meshes import check_mesh_files
 from app.kinematics.models import RobotModel, RobotSummary
 from app.kinematics.text import check_text
 from app.store import (
@@ -48,8 +61,8 @@ from dh2urdf import DHError, DHTable, to_urdf
 
 log = logging.getLogger("denavit.registry")
 
-#: Ids no robot may take: /robots/dh and /robots/urdf are the import routes.
-RESERVED_IDS = frozenset({"dh", "urdf"})
+#: Ids no robot may take: /robots/dh, /robots/urdf and /robots/package are the import routes.
+RESERVED_IDS = frozenset({"dh", "urdf", "package"})
 
 
 def table_yaml(table: DHTable) -> bytes:
@@ -70,6 +83,9 @@ class Registry:
     limits
         Bounds on the work an uploaded URDF may cause (``DENAVIT_MAX_XML_*``,
         ``DENAVIT_MAX_URDF_JOINTS``, ``DENAVIT_MAX_ROBOT_DOF``); default :class:`UrdfLimits`.
+    archive_limits
+        Bounds on an uploaded package (``DENAVIT_MAX_PACKAGE_FILES``,
+        ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES``); default :class:`ArchiveLimits`.
 
     A stored robot that cannot be read back (a record damaged on disk) is left out of the
     listing or answered with a 409 naming it, never a 500.
@@ -79,9 +95,13 @@ class Registry:
     """
 
     def __init__(
-        self, data_dir: Path | str | None = None, limits: UrdfLimits | None = None
+        self,
+        data_dir: Path | str | None = None,
+        limits: UrdfLimits | None = None,
+        archive_limits: ArchiveLimits | None = None,
     ) -> None:
         self.limits = limits or UrdfLimits()
+        self.archive_limits = archive_limits or ArchiveLimits()
         self.catalog = load_catalog()
         self.dh_builtin = load_dh_builtins(exclude=self.catalog)
         self.store = RobotStore(Path(data_dir) / "robots") if data_dir is not None else None
@@ -202,12 +222,15 @@ class Registry:
             srdf = stored.read_text(SRDF_FILE)
             check_documents(urdf, srdf, self.limits)
             meta = stored.meta
+            dirs = [str(erd_share_dir())]
+            if (stored.path / FILES_DIR).is_dir():
+                dirs.insert(0, str(stored.path))  # package://files/... → <robot>/files/...
             return RobotModel(
                 stored.id,
                 urdf,
                 name=meta.get("name") or stored.id,
                 source=meta.get("source") or "upload",
-                package_dirs=[str(erd_share_dir())],
+                package_dirs=dirs,
                 srdf_text=srdf,
                 ee_frame=meta.get("ee_frame"),
                 description=meta.get("description") or "",
@@ -346,6 +369,7 @@ class Registry:
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
         check_documents(urdf, srdf, self.limits)
+        meshes = catalog_meshes(urdf, erd_share_dir(), "urdf", self.limits.xml)
         robot = build_checked_model(
             robot_id,
             urdf,
@@ -355,6 +379,7 @@ class Registry:
             description=description,
             package_dirs=[str(erd_share_dir())],
         )
+        check_mesh_files(meshes, "urdf")
         meta = {
             "name": robot_id,
             "source": "upload",
@@ -366,6 +391,89 @@ class Registry:
         if srdf is not None:
             files[SRDF_FILE] = srdf.encode()
         return self._stored(store.create(robot_id, meta, files), robot)
+
+    def add_package(
+        self,
+        robot_id: str,
+        archive: BinaryIO,
+        description_path: str,
+        *,
+        srdf_path: str | None = None,
+        xacro_args: Mapping[str, str] | None = None,
+        ee_frame: str | None = None,
+        description: str = "",
+    ) -> RobotModel:
+        """Add a robot from a description package (zip or tar.gz archive with its meshes).
+
+        The archive is unpacked within :attr:`archive_limits` into a staging directory of
+        the store (:func:`app.documents.archive.unpack_archive`), its description read and
+        its file references resolved inside it (:func:`app.documents.package.read_package`),
+        the URDF checked like an uploaded one, and every mesh loaded; only then is the
+        robot stored, with the package's files. Any refusal leaves nothing behind.
+        """
+        store = self._writable(robot_id, "name")
+        check_text(description, "description")
+        if ee_frame is not None:
+            check_text(ee_frame, "ee_frame")
+        with store.staging() as staging:
+            files_dir = staging / FILES_DIR
+            files_dir.mkdir()
+            unpack_archive(archive, files_dir, self.archive_limits)
+            package = read_package(
+                files_dir,
+                description_path,
+                srdf=srdf_path,
+                xacro_args=xacro_args or {},
+                catalog=erd_share_dir(),
+                limits=self.limits.xml,
+            )
+            check_documents(package.urdf, package.srdf, self.limits, "description")
+            robot = build_checked_model(
+                robot_id,
+                package.urdf,
+                source="package",
+                srdf=package.srdf,
+                ee_frame=ee_frame,
+                description=description,
+                package_dirs=[str(staging), str(erd_share_dir())],
+                urdf_field="description",
+            )
+            check_mesh_files(package.meshes, "archive")
+            collision_model(robot)  # built (meshes in memory) before anything is stored
+            robot.package_dirs = [str(store.root / robot_id), str(erd_share_dir())]
+            meta = {
+                "name": robot_id,
+                "source": "package",
+                "description": description,
+                "ee_frame": robot.ee_frame,
+                "joints": robot.n,
+            }
+            files = {URDF_FILE: package.urdf.encode()}
+            if package.srdf is not None:
+                files[SRDF_FILE] = package.srdf.encode()
+            stored = store.create(robot_id, meta, files, tree=files_dir)
+        return self._stored(stored, robot)
+
+    def files_root(self, robot_id: str) -> tuple[Path, str] | None:
+        """Where the files of a robot are (GET /robots/{robot_id}/files/{path}).
+
+        ``(directory, mesh URI prefix)``: a catalog robot's package folder of
+        example-robot-data (``package://example-robot-data/robots/<folder>/``), a package
+        robot's stored files (``package://files/``); ``None`` for other robots. Raises
+        :class:`UnknownNameError` for an unknown id.
+        """
+        entry = self.catalog.get(robot_id)
+        if entry is not None:
+            folder = entry.urdf.split("/", 1)[0]
+            prefix = f"package://{CATALOG_PACKAGE}/robots/{folder}/"
+            return erd_share_dir() / CATALOG_PACKAGE / "robots" / folder, prefix
+        if robot_id in self.dh_builtin:
+            return None
+        stored = self._refresh().get(robot_id)
+        if stored is None:
+            raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
+        files = stored.path / FILES_DIR
+        return (files, FILES_PREFIX) if files.is_dir() else None
 
     def delete(self, robot_id: str) -> None:
         """Remove a user-added robot; built-in robots raise :class:`ForbiddenError`."""

@@ -47,6 +47,19 @@ class Settings(BaseSettings):
     max_upload_bytes: int = Field(
         5 * 1024 * 1024, ge=1024, description="Largest robot upload (POST /robots/urdf, /dh)."
     )
+    max_package_bytes: int = Field(
+        32 * 1024 * 1024,
+        ge=1024,
+        description="Largest POST /robots/package body (the multipart form with its archive).",
+    )
+    max_package_files: int = Field(
+        10_000, ge=1, description="Most entries (files and directories) in a package archive."
+    )
+    max_package_unpacked_bytes: int = Field(
+        256 * 1024 * 1024,
+        ge=1024,
+        description="Largest total size of a package's files once unpacked (bytes).",
+    )
     max_batch: int = Field(100_000, ge=1, description="Largest batch (configurations, targets).")
     ik_max_timeout_ms: float = Field(1000.0, gt=0, description="Cap on an IK request's budget.")
     max_xml_elements: int = Field(

@@ -9,18 +9,22 @@ crash sees either the old file or the new one, never half of one.
 Robots
 ------
 A user-added robot is one directory ``<root>/<id>/`` holding ``robot.json`` (metadata),
-``robot.urdf`` and optionally ``robot.srdf`` and ``table.yaml`` (the DH table it came
-from). :class:`RobotStore` makes a robot appear whole or not at all:
+``robot.urdf`` and optionally ``robot.srdf``, ``table.yaml`` (the DH table it came from)
+and ``files/`` (the unpacked description package a robot was uploaded with: its meshes).
+:class:`RobotStore` makes a robot appear whole or not at all:
 
 1. every file is written into a fresh temporary directory ``<root>/.tmp-*`` and fsynced;
+   a package tree is unpacked into another locked temporary directory
+   (:meth:`RobotStore.staging`), fsynced and renamed into the first one as ``files/``;
 2. under the store lock (``<root>/.lock``, ``flock``), the directory is renamed to
    ``<root>/<id>`` (a single atomic ``rename``), the root is fsynced, and the generation
    counter ``<root>/.generation`` is bumped (atomically);
 3. deleting renames ``<root>/<id>`` to a temporary name first (the robot disappears at
    once), bumps the generation, then removes the files.
 
-A crash leaves at worst a ``.tmp-*`` entry, which :meth:`RobotStore.recover` removes at
-the next start, together with any robot directory lacking its metadata or URDF.
+A crash leaves at worst ``.tmp-*`` entries (staging or not yet renamed), which
+:meth:`RobotStore.recover` removes at the next start, together with any robot directory
+lacking its metadata or URDF.
 
 Temporaries in use are protected by an exclusive ``flock`` held by their writer for the
 whole write; the cleanup removes only temporaries it can lock itself, so a worker starting
@@ -65,6 +69,8 @@ SRDF_FILE = "robot.srdf"
 TABLE_FILE = "table.yaml"
 #: The files a robot directory may hold; ``robot.json`` is written by the store itself.
 ROBOT_FILES = frozenset({URDF_FILE, SRDF_FILE, TABLE_FILE})
+#: The directory of a robot's package files (the tree given to :meth:`RobotStore.create`).
+PACKAGE_DIR = "files"
 LOCK_FILE = ".lock"
 GENERATION_FILE = ".generation"
 
@@ -77,6 +83,18 @@ def _fsync_dir(path: Path) -> None:
         os.fsync(fd)
     finally:
         os.close(fd)
+
+
+def _fsync_tree(root: Path) -> None:
+    """fsync every file and directory under ``root`` (a tree without links)."""
+    for folder, _, names in os.walk(root):
+        for name in names:
+            fd = os.open(os.path.join(folder, name), os.O_RDONLY | os.O_NOFOLLOW)
+            try:
+                os.fsync(fd)
+            finally:
+                os.close(fd)
+        _fsync_dir(Path(folder))
 
 
 def _write_all(fd: int, data: bytes) -> None:
@@ -333,8 +351,26 @@ class RobotStore:
             os.close(fd)  # removed by a concurrent cleanup before we locked it
         raise OSError("could not create a temporary directory")  # pragma: no cover
 
+    @contextlib.contextmanager
+    def staging(self) -> Iterator[Path]:
+        """A new, empty, locked temporary directory under the root, removed on exit.
+
+        For a package tree to unpack before :meth:`create` moves it into a robot (being
+        under the root, the move is a ``rename``); a crash leaves it to :meth:`recover`.
+        """
+        tmp, fd = self._temp_dir()
+        try:
+            yield tmp
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+            os.close(fd)
+
     def create(
-        self, robot_id: str, meta: Mapping[str, Any], files: Mapping[str, bytes]
+        self,
+        robot_id: str,
+        meta: Mapping[str, Any],
+        files: Mapping[str, bytes],
+        tree: Path | None = None,
     ) -> StoredRobot:
         """Store a new robot atomically; raises :class:`ConflictError` if the id is taken.
 
@@ -348,6 +384,9 @@ class RobotStore:
         files
             File name (one of ``robot.urdf``, ``robot.srdf``, ``table.yaml``) → bytes;
             ``robot.urdf`` is required.
+        tree
+            A directory under the root (from :meth:`staging`) holding the robot's package
+            files: fsynced, then moved (renamed) into the robot as ``files/``.
         """
         check_robot_id(robot_id)
         unknown = set(files) - ROBOT_FILES
@@ -372,6 +411,9 @@ class RobotStore:
                     os.fsync(out)
                 finally:
                     os.close(out)
+            if tree is not None:
+                _fsync_tree(tree)
+                os.rename(tree, tmp / PACKAGE_DIR)
             os.fsync(fd)
             target = self.root / robot_id
             with self._locked():

@@ -20,6 +20,7 @@ from app.registry import Registry
 from app.store import (
     GENERATION_FILE,
     META_FILE,
+    PACKAGE_DIR,
     TMP_PREFIX,
     URDF_FILE,
     RobotStore,
@@ -148,6 +149,30 @@ def test_create_list_load_delete(tmp_path: Path) -> None:
     assert tree(store.root) == [GENERATION_FILE, ".lock"]
     with pytest.raises(UnknownNameError):
         store.delete("arm-1")
+
+
+def test_create_with_a_package_tree_and_staging_cleanup(tmp_path: Path) -> None:
+    """A staged tree moves into the robot as files/; a failed write or a refused upload
+    leaves no staging directory, and a staging directory a crash left is recovered."""
+    store = RobotStore(tmp_path)
+    with store.staging() as staging:
+        (staging / "files" / "meshes").mkdir(parents=True)
+        (staging / "files" / "meshes" / "a.stl").write_bytes(b"solid a")
+        made = store.create("pkg", {"source": "package"}, {URDF_FILE: URDF}, staging / "files")
+    assert (made.path / PACKAGE_DIR / "meshes" / "a.stl").read_bytes() == b"solid a"
+    with pytest.raises(ValueError), store.staging() as staging:
+        (staging / "x").write_bytes(b"partial")
+        raise ValueError("refused")
+    with store.staging() as staging:
+        (staging / "files").mkdir()
+        with pytest.raises(ConflictError):
+            store.create("pkg", {"source": "package"}, {URDF_FILE: URDF}, staging / "files")
+    assert not [p for p in tree(tmp_path) if TMP_PREFIX in p]
+    (tmp_path / f"{TMP_PREFIX}crashed" / "files").mkdir(parents=True)  # unlocked: a crash
+    assert store.recover() == 1
+    assert not [p for p in tree(tmp_path) if TMP_PREFIX in p]
+    store.delete("pkg")
+    assert tree(tmp_path) == [GENERATION_FILE, ".lock"]
 
 
 def test_create_conflict_keeps_first_and_leaves_no_temporary(tmp_path: Path) -> None:

@@ -9,6 +9,7 @@ from app.api import (
     health,
     ik,
     jacobian,
+    packages,
     reachability,
     robots,
     scenes,
@@ -18,6 +19,7 @@ from app.api import (
 #: Routers mounted by :func:`app.main.create_app`, in documentation order.
 ROUTERS = [
     health.router,
+    packages.router,  # before robots: /robots/package is not the robot 'package'
     robots.router,
     fk.router,
     jacobian.router,

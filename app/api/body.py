@@ -16,10 +16,12 @@ from typing import Any, TypeVar
 
 import numpy as np
 import orjson
+from fastapi import Request
 from fastapi.exceptions import RequestValidationError
 from pydantic import BaseModel, ValidationError
+from starlette.responses import Response
 
-from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError
+from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError, problem
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import check_joint_values
 from app.kinematics.text import SURROGATE_REASON, find_surrogate
@@ -174,6 +176,25 @@ def finite_matrix(obj: Any, width: int | None = None) -> np.ndarray | None:
     if not np.isfinite(arr).all():
         return None
     return arr
+
+
+async def read_capped(request: Request, limit: int, detail: str) -> bytes | Response:
+    """The request body, or a 413 problem (``detail``, field ``body``) past ``limit`` bytes.
+
+    The body is counted as it streams, so an oversized one is never held whole.
+    """
+    too_large = problem(413, detail, kind="body-too-large", field="body", instance=request.url.path)
+    length = request.headers.get("content-length", "")
+    if length.isdigit() and int(length) > limit:
+        return too_large
+    chunks: list[bytes] = []
+    total = 0
+    async for chunk in request.stream():
+        total += len(chunk)
+        if total > limit:
+            return too_large
+        chunks.append(chunk)
+    return b"".join(chunks)
 
 
 def body_schema(

@@ -17,7 +17,7 @@ from fastapi import APIRouter, Depends, Request
 from pydantic import BaseModel, Field
 from starlette.responses import Response
 
-from app.api.body import body_schema, decode_body
+from app.api.body import body_schema, decode_body, read_capped
 from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
 from app.api.offload import offload
@@ -39,7 +39,7 @@ class RobotSummaryOut(BaseModel):
 
     id: str = Field(description="Robot id, used in every /robots/{robot_id} URL.")
     name: str = Field(description="Human-readable name.")
-    source: str = Field(description="example-robot-data | dh | upload.")
+    source: str = Field(description="example-robot-data | dh | upload | package.")
     joints: int = Field(description="Number of actuated joints (length of a configuration).")
     description: str = Field("", description="Short description.")
 
@@ -89,6 +89,17 @@ class FrameOut(BaseModel):
     parent_joint: str | None = Field(description="The actuated joint that moves it, if any.")
 
 
+class RobotFilesOut(BaseModel):
+    """Where a viewer fetches the files (meshes, textures) a robot's URDF names."""
+
+    uri_prefix: str = Field(
+        description="Mesh URIs of the URDF that start with this prefix are files served here."
+    )
+    url: str = Field(
+        description="Replace uri_prefix by this URL path (GET /robots/{robot_id}/files/{path})."
+    )
+
+
 class RobotDetail(BaseModel):
     """Everything a client needs to talk about a robot."""
 
@@ -120,6 +131,11 @@ class RobotDetail(BaseModel):
     collision_pairs: list[list[str]] = Field(
         description="Self-collision link pairs [a, b] that collision checks test (same-body, "
         "adjacent and SRDF-disabled pairs removed)."
+    )
+    files: RobotFilesOut | None = Field(
+        None,
+        description="How the URDF's mesh URIs map to GET /robots/{robot_id}/files/{path} "
+        "(catalog and package robots; null for others).",
     )
 
 
@@ -227,8 +243,9 @@ _JSON_TYPES = ("application/json", "")
 _YAML_TYPES = ("application/yaml", "application/x-yaml", "text/yaml", "text/x-yaml")
 
 
-def robot_detail(robot: RobotModel) -> dict[str, Any]:
-    """The wire description of a robot (GET /robots/{robot_id})."""
+def robot_detail(robot: RobotModel, files: tuple[Any, str] | None = None) -> dict[str, Any]:
+    """The wire description of a robot (GET /robots/{robot_id}); ``files`` as returned by
+    :meth:`Registry.files_root`."""
     return {
         "id": robot.id,
         "name": robot.name,
@@ -244,6 +261,7 @@ def robot_detail(robot: RobotModel) -> dict[str, Any]:
         "neutral": robot.neutral().tolist(),
         "has_collision_geometry": robot.has_collision_geometry,
         "collision_pairs": [list(p) for p in collision_link_pairs(robot)],
+        "files": ({"uri_prefix": files[1], "url": f"/robots/{robot.id}/files/"} if files else None),
     }
 
 
@@ -253,32 +271,16 @@ def _created(detail: dict[str, Any]) -> ORJSONResponse:
 
 
 async def _read_upload(request: Request, cap: int | None = None) -> bytes | Response:
-    """The request body, or a 413 problem past ``DENAVIT_MAX_UPLOAD_BYTES`` (or ``cap``).
-
-    The body is counted as it streams, so an oversized one is never held whole.
-    """
+    """The request body, or a 413 problem past ``DENAVIT_MAX_UPLOAD_BYTES`` (or ``cap``)."""
     limit = request.app.state.settings.max_upload_bytes
     if cap is not None:
         limit = min(limit, cap)
-    too_large = problem(
-        413,
+    return await read_capped(
+        request,
+        limit,
         f"body: larger than the {limit}-byte limit of this upload (DENAVIT_MAX_UPLOAD_BYTES; "
         f"DH tables at most {MAX_DH_DOCUMENT_BYTES})",
-        kind="body-too-large",
-        field="body",
-        instance=request.url.path,
     )
-    length = request.headers.get("content-length", "")
-    if length.isdigit() and int(length) > limit:
-        return too_large
-    chunks: list[bytes] = []
-    total = 0
-    async for chunk in request.stream():
-        total += len(chunk)
-        if total > limit:
-            return too_large
-        chunks.append(chunk)
-    return b"".join(chunks)
 
 
 def _import_dh(reg: Registry, text: str, fmt: Literal["json", "yaml"]) -> dict[str, Any]:
@@ -417,9 +419,13 @@ def list_robots(reg: RegistryDep) -> ORJSONResponse:
 def get_robot(robot_id: RobotId, reg: RegistryDep) -> ORJSONResponse:
     """Describe a robot: joints in order, frames, default end effector, neutral configuration.
 
+    ``files`` tells a viewer where the meshes are: a mesh URI of GET /robots/{robot_id}/urdf
+    that starts with ``files.uri_prefix`` is served at ``files.url`` + the rest of the URI
+    (``package://files/meshes/a.stl`` → ``/robots/{robot_id}/files/meshes/a.stl``).
+
     Runs in the thread pool: the first request for a robot parses its URDF.
     """
-    return ORJSONResponse(robot_detail(reg.get(robot_id)))
+    return ORJSONResponse(robot_detail(reg.get(robot_id), reg.files_root(robot_id)))
 
 
 @router.get(

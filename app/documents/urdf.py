@@ -9,7 +9,7 @@ as it is for Pinocchio, and a namespace trick cannot hide an element from a chec
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from xml.etree.ElementTree import Element
 
@@ -142,13 +142,17 @@ def _check_numbers(root: Element, field: str) -> None:
                 )
 
 
-def _check_resources(root: Element, field: str) -> None:
+def resource_elements(root: Element) -> Iterator[tuple[Element, str]]:
+    """Every ``<mesh>`` and ``<texture>`` element with a ``filename``, and that filename."""
     for element in root.iter():
-        if element.tag not in ("mesh", "texture"):
-            continue
-        uri = element.get("filename")
-        if uri is None:
-            continue
+        if element.tag in ("mesh", "texture"):
+            uri = element.get("filename")
+            if uri is not None:
+                yield element, uri
+
+
+def _check_resources(root: Element, field: str) -> None:
+    for element, uri in resource_elements(root):
         reason = check_resource_uri(uri)
         if reason:
             raise InvalidInputError(
@@ -293,13 +297,15 @@ def check_urdf_document(
         )
 
 
-def check_documents(urdf: str, srdf: str | None, limits: UrdfLimits) -> None:
+def check_documents(
+    urdf: str, srdf: str | None, limits: UrdfLimits, urdf_field: str = "urdf"
+) -> None:
     """The upload checks of a URDF (and its SRDF) within ``limits``: parsed with
     literal names as Pinocchio reads them, no DTD or entities, bounded work
     (:func:`check_urdf_document`, :func:`~app.documents.srdf.check_srdf_document`); raises
-    :class:`InvalidInputError` naming ``urdf`` or ``srdf``."""
-    root = parse_literal_xml(urdf, "urdf", limits.xml)
-    check_urdf_document(root, "urdf", limits)
+    :class:`InvalidInputError` naming ``urdf_field`` or ``srdf``."""
+    root = parse_literal_xml(urdf, urdf_field, limits.xml)
+    check_urdf_document(root, urdf_field, limits)
     if srdf is not None:
         links = {link.get("name", "") for link in root.findall("link")}
         joints = parse_urdf_joints(urdf)

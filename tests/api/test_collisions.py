@@ -353,7 +353,8 @@ def test_collision_aware_ik_bad_input(client, extra: dict, field: str) -> None:
 
 
 def test_robot_with_unloadable_meshes_is_422_not_500(client) -> None:
-    """An uploaded URDF whose collision mesh is not available: a 422 naming robot_id."""
+    """An uploaded URDF whose collision mesh is not available: refused at upload (a 201
+    means collisions work), naming the mesh."""
     urdf = (
         '<robot name="m"><link name="a"><collision><geometry>'
         '<mesh filename="package://nowhere/a.stl"/></geometry></collision></link>'
@@ -362,9 +363,6 @@ def test_robot_with_unloadable_meshes_is_422_not_500(client) -> None:
         "</robot>"
     )
     r = client.post("/robots/urdf", json={"name": "meshless", "urdf": urdf})
-    assert r.status_code == 201, r.text
-    r = client.post("/robots/meshless/collisions", json={"q": [0.0]})
-    body = problem(r, 422, "robot_id")
+    body = problem(r, 422, "urdf")
     assert "nowhere/a.stl" in body["detail"]
-    # The pair list is still available (computed from the URDF text).
-    assert client.get("/robots/meshless/collision_pairs").json()["pairs"] == []
+    problem(client.get("/robots/meshless"), 404, "robot_id")

@@ -262,11 +262,11 @@ def test_mesh_uris_pinocchio_resolves_differently_are_refused(client, uri) -> No
 
 
 def test_mesh_loading_errors_leak_no_host_or_source_path(client) -> None:
-    """A file inside the package roots that is no mesh: the answer names the URI only."""
+    """A file inside the package roots that is no mesh: refused at upload, naming the URI
+    only."""
     uri = "package://example-robot-data/robots/ur_description/urdf/ur5_robot.urdf"
     doc = urdf_doc(geometry=f'<mesh filename="{uri}"/>')
-    assert client.post("/robots/urdf", json={"name": "nomesh", "urdf": doc}).status_code == 201
-    body = problem(client.post("/robots/nomesh/collisions", json={"q": [0.0]}), 422, "robot_id")
+    body = problem(client.post("/robots/urdf", json={"name": "nomesh", "urdf": doc}), 422, "urdf")
     detail = body["detail"]
     assert uri in detail
     for leak in (str(erd_share_dir()), ".cpp", "From file", "line:", "/project/"):

@@ -458,7 +458,7 @@ def test_fuzzed_tables_never_500(tmp_path_factory: pytest.TempPathFactory, doc: 
     assert not (data / "robots" / "fuzz").exists()
 
 
-@pytest.mark.parametrize("reserved", ["dh", "urdf"])
+@pytest.mark.parametrize("reserved", ["dh", "urdf", "package"])
 def test_import_route_names_are_reserved(client: TestClient, reserved: str) -> None:
     body = problem(client.post("/robots/dh", json={**TABLE, "name": reserved}), 422, "name")
     assert "reserved" in body["detail"]

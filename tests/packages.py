@@ -1,0 +1,71 @@
+"""Description packages built in the tests from the catalog's own Panda files.
+
+:func:`panda_files` lays the Panda out as a lab ships it: ``package.xml``, ``urdf/panda.urdf``
+naming its meshes by relative path (``../meshes/collision/link0.stl``), the meshes under
+``meshes/``, and the SRDF; :func:`zip_bytes` and :func:`tar_gz_bytes` pack a
+name → bytes mapping (with hostile entries where a test asks for them).
+"""
+
+from __future__ import annotations
+
+import io
+import tarfile
+import zipfile
+from collections.abc import Mapping
+
+from app.catalog import erd_share_dir
+
+PANDA_DIR = erd_share_dir() / "example-robot-data" / "robots" / "panda_description"
+CATALOG_PREFIX = "package://example-robot-data/robots/panda_description/"
+PACKAGE_XML = (
+    '<?xml version="1.0"?><package format="3"><name>lab_panda</name>'
+    "<version>1.0.0</version><description>test</description></package>"
+)
+
+
+def panda_urdf(mesh_prefix: str = "../") -> str:
+    """The catalog's Panda URDF with its mesh URIs rewritten to ``mesh_prefix`` + path."""
+    return (PANDA_DIR / "urdf" / "panda.urdf").read_text().replace(CATALOG_PREFIX, mesh_prefix)
+
+
+def panda_files(mesh_prefix: str = "../", top: str = "") -> dict[str, bytes]:
+    """The Panda package: name → bytes (under the folder ``top`` when given)."""
+    files = {
+        "package.xml": PACKAGE_XML.encode(),
+        "urdf/panda.urdf": panda_urdf(mesh_prefix).encode(),
+        "srdf/panda.srdf": (PANDA_DIR / "srdf" / "panda.srdf").read_bytes(),
+    }
+    for mesh in sorted((PANDA_DIR / "meshes").rglob("*")):
+        if mesh.is_file():
+            files[mesh.relative_to(PANDA_DIR).as_posix()] = mesh.read_bytes()
+    return {f"{top}{name}": data for name, data in files.items()}
+
+
+def zip_bytes(files: Mapping[str, bytes], *, modes: Mapping[str, int] | None = None) -> bytes:
+    """A zip of ``files``; ``modes`` sets an entry's Unix mode (e.g. a symlink's)."""
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as zf:
+        for name, data in files.items():
+            info = zipfile.ZipInfo(name)
+            info.compress_type = zipfile.ZIP_DEFLATED
+            mode = (modes or {}).get(name)
+            if mode is not None:
+                info.external_attr = mode << 16
+            zf.writestr(info, data)
+    return buf.getvalue()
+
+
+def tar_gz_bytes(files: Mapping[str, bytes], links: Mapping[str, tuple[bytes, str]] = {}) -> bytes:  # noqa: B006
+    """A tar.gz of ``files``, plus ``links``: name → (tar type, link target)."""
+    buf = io.BytesIO()
+    with tarfile.open(fileobj=buf, mode="w:gz", compresslevel=1) as tf:
+        for name, data in files.items():
+            info = tarfile.TarInfo(name)
+            info.size = len(data)
+            tf.addfile(info, io.BytesIO(data))
+        for name, (kind, target) in links.items():
+            info = tarfile.TarInfo(name)
+            info.type = kind
+            info.linkname = target
+            tf.addfile(info)
+    return buf.getvalue()
