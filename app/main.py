@@ -29,6 +29,7 @@ from app.api import errors, metrics
 from app.body_limit import BodyLimitMiddleware
 from app.documents.archive import ArchiveLimits
 from app.documents.urdf import UrdfLimits
+from app.documents.xacro import XacroLimits
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import procwatch
 from app.kinematics.ik.compiled import warm_up as warm_up_ik
@@ -103,7 +104,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_files=settings.max_package_files,
         max_unpacked_bytes=settings.max_package_unpacked_bytes,
     )
-    app.state.registry = Registry(settings.data_dir, limits, archive_limits)
+    xacro_limits = XacroLimits(
+        timeout_s=settings.xacro_timeout_s,
+        memory_bytes=settings.xacro_memory_bytes,
+        max_output_chars=settings.xacro_max_output_chars,
+    )
+    app.state.registry = Registry(settings.data_dir, limits, archive_limits, xacro_limits)
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)

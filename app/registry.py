@@ -38,6 +38,7 @@ from app.documents.package import (
     read_package,
 )
 from app.documents.urdf import UrdfLimits, build_checked_model, check_documents
+from app.documents.xacro import XacroLimits
 from app.kinematics.collision import collision_model
 from app.kinematics.errors import (
     ConflictError,
@@ -99,9 +100,11 @@ class Registry:
         data_dir: Path | str | None = None,
         limits: UrdfLimits | None = None,
         archive_limits: ArchiveLimits | None = None,
+        xacro_limits: XacroLimits | None = None,
     ) -> None:
         self.limits = limits or UrdfLimits()
         self.archive_limits = archive_limits or ArchiveLimits()
+        self.xacro_limits = xacro_limits or XacroLimits()
         self.catalog = load_catalog()
         self.dh_builtin = load_dh_builtins(exclude=self.catalog)
         self.store = RobotStore(Path(data_dir) / "robots") if data_dir is not None else None
@@ -426,6 +429,7 @@ class Registry:
                 xacro_args=xacro_args or {},
                 catalog=erd_share_dir(),
                 limits=self.limits.xml,
+                xacro_limits=self.xacro_limits,
             )
             check_documents(package.urdf, package.srdf, self.limits, "description")
             robot = build_checked_model(

@@ -23,6 +23,7 @@ from app.api.offload import offload
 from app.api.robots import _WRITE_ERRORS, RobotDetail, _created, robot_detail
 from app.api.schemas import RobotId, Schema, Text
 from app.api.security import require_token
+from app.documents.xacro import check_xacro_args
 from app.kinematics.errors import InvalidInputError
 from app.registry import Registry
 from app.store import ID_PATTERN
@@ -71,10 +72,14 @@ class PackageUpload(Schema):
     xacro_args: Text | None = Field(
         None,
         max_length=65536,
-        description='JSON object of xacro arguments, names to strings ({"arm_id": "panda"}).',
+        description="JSON object of xacro arguments: names to strings, numbers or booleans "
+        '({"arm_id": "panda"}).',
     )
     ee_frame: Text | None = Field(
-        None, max_length=256, description="Default end-effector frame (default: deepest link)."
+        None,
+        max_length=256,
+        description="Default end-effector frame (default: the SRDF end effector's parent link, "
+        "else the tip of the longest serial chain that is not a gripper finger).",
     )
     summary: Text = Field("", max_length=1000, description="Short description of the robot.")
 
@@ -84,15 +89,15 @@ class _PackageForm(PackageUpload):
 
 
 def _xacro_args(text: str | None) -> dict[str, str]:
+    """The ``xacro_args`` form field: a JSON object of argument names to strings, numbers or
+    booleans (:func:`app.documents.xacro.check_xacro_args`)."""
     if text is None:
         return {}
     try:
         args = orjson.loads(text)
     except orjson.JSONDecodeError as exc:
         raise InvalidInputError(f"not a JSON object ({exc})", "xacro_args") from None
-    if not isinstance(args, dict) or not all(isinstance(v, str) for v in args.values()):
-        raise InvalidInputError("must be a JSON object of strings", "xacro_args")
-    return args
+    return check_xacro_args(args)
 
 
 def _add_package(reg: Registry, form: _PackageForm, archive: Any) -> dict[str, Any]:

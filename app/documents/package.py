@@ -35,7 +35,7 @@ from xml.etree.ElementTree import tostring
 from app.documents.archive import member_parts
 from app.documents.mjcf import mjcf_to_urdf
 from app.documents.urdf import check_resource_uri, resource_elements
-from app.documents.xacro import expand_xacro
+from app.documents.xacro import XacroLimits, expand_xacro
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.meshes import MESH_FORMATS
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
@@ -216,6 +216,7 @@ def read_package(
     xacro_args: Mapping[str, str],
     catalog: Path,
     limits: XmlLimits,
+    xacro_limits: XacroLimits = XacroLimits(),
 ) -> Package:
     """The URDF (references rewritten, see the module docstring) and SRDF of a package.
 
@@ -229,8 +230,8 @@ def read_package(
         Arguments of a ``.xacro`` description.
     catalog
         The example-robot-data ``share`` directory (for ``package://example-robot-data``).
-    limits
-        XML work bounds.
+    limits, xacro_limits
+        XML work bounds; the bounds of a xacro expansion (time, memory, output).
     """
     lowered = description.lower()
     if not lowered.endswith(DESCRIPTION_TYPES):
@@ -240,7 +241,15 @@ def read_package(
         )
     rel, text = _read_member(root, description, "description", "description")
     if lowered.endswith(".xacro"):
-        urdf = expand_xacro(root, rel, xacro_args, limits)
+        urdf = expand_xacro(
+            root,
+            rel,
+            xacro_args,
+            limits,
+            timeout_s=xacro_limits.timeout_s,
+            memory_bytes=xacro_limits.memory_bytes,
+            max_output_chars=xacro_limits.max_output_chars,
+        )
     elif lowered.endswith(".xml"):
         urdf = mjcf_to_urdf(root, rel, limits)
     else:

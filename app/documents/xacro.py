@@ -25,7 +25,7 @@ import subprocess
 import sys
 import time
 from collections.abc import Mapping
-from dataclasses import asdict
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import app
@@ -37,6 +37,17 @@ from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 XACRO_TIMEOUT_S = 20.0
 XACRO_MEMORY_BYTES = 512 * 1024 * 1024
 XACRO_MAX_OUTPUT_CHARS = 8 * 1024 * 1024
+
+
+@dataclass(frozen=True, slots=True)
+class XacroLimits:
+    """The bounds of one expansion (``DENAVIT_XACRO_*``), passed to :func:`expand_xacro`."""
+
+    timeout_s: float = XACRO_TIMEOUT_S
+    memory_bytes: int = XACRO_MEMORY_BYTES
+    max_output_chars: int = XACRO_MAX_OUTPUT_CHARS
+
+
 #: At most this many ``xacro_args``, names and values of at most this many characters.
 MAX_ARGS = 256
 MAX_ARG_CHARS = 4096
