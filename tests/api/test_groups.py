@@ -233,8 +233,9 @@ def test_analysis_velocity_and_collisions_take_the_group(client: TestClient) -> 
 
 # ---------------------------------------------------------------------------- IK
 def test_ik_on_panda_arm_solves_random_reachable_targets(client: TestClient, reference) -> None:
-    """≥ 99.9 % of 1000 targets (FK of random configurations within the limits), from the
-    named state ``ready``; capped by iterations, not by the clock."""
+    """≥ 99.9 % of 1000 targets (FK of random configurations within the limits), from a
+    7-value seed (the arm's joints only, as a MoveIt client sends it); capped by iterations,
+    not by the clock."""
     qs = random_arm(np.random.default_rng(2026), 1000, client)
     targets = []
     for q7 in qs:
@@ -246,7 +247,7 @@ def test_ik_on_panda_arm_solves_random_reachable_targets(client: TestClient, ref
         json={
             "targets": targets,
             "group": "panda_arm",
-            "seed": "ready",
+            "seed": [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785],
             "chain_seeds": False,
             "timeout_ms": 10_000,
             "max_iterations": 5000,
@@ -262,6 +263,8 @@ def test_ik_on_panda_arm_solves_random_reachable_targets(client: TestClient, ref
         if item["success"]:
             T = ref_pose(reference, np.array(item["q"]), "panda_link8")
             assert np.linalg.norm(T[:3, 3] - target["position"]) < 2e-5
+            R = pin.Quaternion(np.array(target["orientation"])).matrix()
+            assert np.linalg.norm(pin.log3(R.T @ T[:3, :3])) < 2e-5
 
 
 def test_ik_with_a_seven_value_seed_keeps_the_finger(client: TestClient, reference) -> None:

@@ -116,6 +116,21 @@ def test_xacro_package_fk_collisions_and_default_tip(client: TestClient) -> None
     assert mesh.content == (PANDA_DIR / "meshes" / "collision" / "link4.stl").read_bytes()
 
 
+def test_panda_package_without_srdf_tips_at_the_tcp_not_a_finger(client: TestClient) -> None:
+    """The Panda as a lab ships it, no SRDF and no ee_frame: the tip is the hand's TCP (the
+    deepest link, the old rule, was panda_rightfinger); IK on it moves the arm."""
+    files = panda_files()
+    del files["srdf/panda.srdf"]
+    resp = _upload(client, files, "urdf/panda.urdf")
+    assert resp.status_code == 201, resp.text
+    assert resp.json()["end_effector"] == "panda_hand_tcp"
+    q = [0.1, -0.6, 0.2, -2.2, 0.1, 1.7, 0.6, 0.02]
+    pose = client.post("/robots/lab/fk", json={"q": q}).json()["poses"]["panda_hand_tcp"]
+    target = {"position": pose["position"], "orientation": pose["orientation"]}
+    ik = client.post("/robots/lab/ik", json={"target": target, "timeout_ms": 500}).json()
+    assert ik["success"] and ik["frame"] == "panda_hand_tcp", ik
+
+
 def test_xacro_package_errors_name_the_field(client: TestClient, settings: Settings) -> None:
     files = {**panda_files(), "urdf/lab_panda.urdf.xacro": WRAPPER.encode()}
     bad_args = _upload(client, files, "urdf/lab_panda.urdf.xacro", xacro_args="[1, 2]")
