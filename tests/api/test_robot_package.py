@@ -13,7 +13,6 @@ import warnings
 import zipfile
 from pathlib import Path
 
-import numpy as np
 import pytest
 import yourdfpy
 from fastapi.testclient import TestClient
@@ -21,7 +20,14 @@ from fastapi.testclient import TestClient
 from app.main import create_app
 from app.settings import Settings
 from tests.helpers import problem
-from tests.packages import PANDA_DIR, panda_files, panda_urdf, tar_gz_bytes, zip_bytes
+from tests.packages import (
+    PANDA_DIR,
+    assert_fk_matches,
+    panda_files,
+    panda_urdf,
+    tar_gz_bytes,
+    zip_bytes,
+)
 
 LINK0 = (PANDA_DIR / "meshes" / "collision" / "link0.stl").read_bytes()
 TINY_XML = b'<package format="3"><name>tiny</name><version>1.0.0</version></package>'
@@ -76,21 +82,8 @@ def test_panda_zip_fk_matches_yourdfpy_and_collisions_work(
     reference = yourdfpy.URDF.load(
         io.BytesIO(panda_urdf().encode()), load_meshes=False, load_collision_meshes=False
     )
-    names = [j["name"] for j in body["joints"]]
-    assert names == reference.actuated_joint_names
-    rng = np.random.default_rng(16)
-    lower = np.array([j["limits"]["lower"] for j in body["joints"]])
-    upper = np.array([j["limits"]["upper"] for j in body["joints"]])
     links = ["panda_link3", "panda_link7", "panda_hand", "panda_leftfinger", "panda_rightfinger"]
-    for _ in range(5):
-        q = rng.uniform(lower, upper)
-        fk = client.post("/robots/lab/fk", json={"q": q.tolist(), "frames": links})
-        assert fk.status_code == 200, fk.text
-        reference.update_cfg(q)
-        for link in links:
-            expected = reference.get_transform(link, reference.base_link)
-            got = np.array(fk.json()["poses"][link]["matrix"])
-            np.testing.assert_allclose(got, expected, atol=1e-12, err_msg=link)
+    assert_fk_matches(client, "lab", reference, links, seed=16)
 
     # A sphere centred on panda_link4's frame (inside the arm) touches its mesh.
     q = body["neutral"]

@@ -14,14 +14,13 @@ import io
 import json
 import math
 
-import numpy as np
 import yourdfpy
 from fastapi.testclient import TestClient
 
 from app.main import create_app
 from app.settings import Settings
 from tests.helpers import problem
-from tests.packages import PANDA_DIR, panda_files, panda_urdf, zip_bytes
+from tests.packages import PANDA_DIR, assert_fk_matches, panda_files, panda_urdf, zip_bytes
 
 XACRO_NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 
@@ -61,24 +60,6 @@ def _upload(client: TestClient, files: dict[str, bytes], description: str, **fie
     )
 
 
-def _check_fk(client: TestClient, reference: yourdfpy.URDF, links: list[str], seed: int):
-    """FK of random configurations within limits equals the reference's, to 1e-12."""
-    detail = client.get("/robots/lab").json()
-    assert [j["name"] for j in detail["joints"]] == reference.actuated_joint_names
-    lower = np.array([j["limits"]["lower"] for j in detail["joints"]])
-    upper = np.array([j["limits"]["upper"] for j in detail["joints"]])
-    rng = np.random.default_rng(seed)
-    for _ in range(10):
-        q = rng.uniform(lower, upper)
-        fk = client.post("/robots/lab/fk", json={"q": q.tolist(), "frames": links})
-        assert fk.status_code == 200, fk.text
-        reference.update_cfg(q)
-        for link in links:
-            expected = reference.get_transform(link, reference.base_link)
-            got = np.array(fk.json()["poses"][link]["matrix"])
-            np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12, err_msg=link)
-
-
 def test_xacro_package_fk_collisions_and_default_tip(client: TestClient) -> None:
     files = {**panda_files(), "urdf/lab_panda.urdf.xacro": WRAPPER.encode()}
     del files["srdf/panda.srdf"]  # no SRDF: the default tip comes from the tree alone
@@ -99,7 +80,7 @@ def test_xacro_package_fk_collisions_and_default_tip(client: TestClient) -> None
         load_meshes=False,
         load_collision_meshes=False,
     )
-    _check_fk(client, reference, ["panda_link4", "panda_hand", "tool_tip"], seed=16)
+    assert_fk_matches(client, "lab", reference, ["panda_link4", "panda_hand", "tool_tip"], seed=16)
 
     # The included URDF's relative meshes resolved inside the package and were loaded.
     q = body["neutral"]
@@ -209,7 +190,7 @@ def test_mjcf_package_matches_its_urdf_twin(client: TestClient) -> None:
     assert resp.status_code == 201, resp.text
     assert resp.json()["has_collision_geometry"]
     reference = yourdfpy.URDF.load(io.BytesIO(TWIN.encode()), load_meshes=False)
-    _check_fk(client, reference, ["base", "l1", "l2", "l3", "tip"], seed=7)
+    assert_fk_matches(client, "lab", reference, ["base", "l1", "l2", "l3", "tip"], seed=7)
     assert client.get("/robots/lab/files/mjcf/assets/link0.stl").status_code == 200
 
 
