@@ -130,7 +130,8 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
 
     Form fields: ``name``, ``archive`` (the file), ``description`` (path inside the archive
     of a ``.urdf``, ``.xacro`` or MJCF ``.xml``), optional ``srdf`` (path), ``xacro_args``
-    (JSON object of strings), ``ee_frame`` and ``summary`` (short description).
+    (JSON object of strings, numbers or booleans), ``ee_frame`` and ``summary`` (short
+    description).
 
     The archive is unpacked safely (422 naming ``archive`` and the member otherwise): no
     absolute names, ``..``, drive letters or backslashes, no links, devices or duplicate
