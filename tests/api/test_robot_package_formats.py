@@ -108,7 +108,9 @@ def test_panda_package_without_srdf_tips_at_the_tcp_not_a_finger(client: TestCli
     q = [0.1, -0.6, 0.2, -2.2, 0.1, 1.7, 0.6, 0.02]
     pose = client.post("/robots/lab/fk", json={"q": q}).json()["poses"]["panda_hand_tcp"]
     target = {"position": pose["position"], "orientation": pose["orientation"]}
-    ik = client.post("/robots/lab/ik", json={"target": target, "timeout_ms": 500}).json()
+    ik = client.post(
+        "/robots/lab/ik", json={"target": target, "timeout_ms": 1000, "max_iterations": 5000}
+    ).json()
     assert ik["success"] and ik["frame"] == "panda_hand_tcp", ik
 
 
