@@ -197,6 +197,8 @@ def _unpack_zip(source: BinaryIO, out: _Extractor) -> None:
             try:
                 with archive.open(info) as stream:
                     out.file(name, _read_chunks(stream))
+            # zipfile raises NotImplementedError for a compression method it lacks (e.g.
+            # Deflate64): a refusal of that member, like a corrupt stream.
             except (zipfile.BadZipFile, zlib.error, EOFError, NotImplementedError) as exc:
                 raise _refuse(f"cannot be decompressed ({exc})", name) from None
             except OSError as exc:
