@@ -114,11 +114,10 @@ class _Extractor:
         self.total = 0
         self.entries = 0
 
-    def count(self, name: str) -> None:
+    def count(self) -> None:
         self.entries += 1
         if self.entries > self.limits.max_files:
             raise _refuse(f"more than {self.limits.max_files} entries (DENAVIT_MAX_PACKAGE_FILES)")
-        del name
 
     def _claim(self, name: str, kind: str) -> tuple[str, ...] | None:
         parts = member_parts(name)
@@ -183,7 +182,7 @@ def _unpack_zip(source: BinaryIO, out: _Extractor) -> None:
             )
         for info in infos:
             name = info.filename
-            out.count(name)
+            out.count()
             mode = info.external_attr >> 16
             if stat.S_ISLNK(mode):
                 raise _refuse("symbolic links are not allowed", name)
@@ -242,7 +241,7 @@ def _unpack_tar(source: BinaryIO, out: _Extractor, compressed: bool) -> None:
         with tarfile.open(fileobj=budget, mode="r|") as archive:
             for member in archive:
                 name = member.name
-                out.count(name)
+                out.count()
                 if member.issym():
                     raise _refuse("symbolic links are not allowed", name)
                 if member.islnk():
