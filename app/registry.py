@@ -32,7 +32,6 @@ from app.documents.archive import ArchiveLimits, unpack_archive
 from app.documents.dh import MAX_DH_JOINTS, dh_error
 from app.documents.package import (
     CATALOG_PACKAGE,
-    FILES_DIR,
     FILES_PREFIX,
     catalog_meshes,
     read_package,
@@ -51,6 +50,7 @@ from app.kinematics.meshes import check_mesh_files
 from app.kinematics.models import RobotModel, RobotSummary
 from app.kinematics.text import check_text
 from app.store import (
+    PACKAGE_DIR,
     SRDF_FILE,
     TABLE_FILE,
     URDF_FILE,
@@ -226,7 +226,7 @@ class Registry:
             check_documents(urdf, srdf, self.limits)
             meta = stored.meta
             dirs = [str(erd_share_dir())]
-            if (stored.path / FILES_DIR).is_dir():
+            if (stored.path / PACKAGE_DIR).is_dir():
                 dirs.insert(0, str(stored.path))  # package://files/... → <robot>/files/...
             return RobotModel(
                 stored.id,
@@ -419,7 +419,7 @@ class Registry:
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
         with store.staging() as staging:
-            files_dir = staging / FILES_DIR
+            files_dir = staging / PACKAGE_DIR
             files_dir.mkdir()
             unpack_archive(archive, files_dir, self.archive_limits)
             package = read_package(
@@ -476,7 +476,7 @@ class Registry:
         stored = self._refresh().get(robot_id)
         if stored is None:
             raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
-        files = stored.path / FILES_DIR
+        files = stored.path / PACKAGE_DIR
         return (files, FILES_PREFIX) if files.is_dir() else None
 
     def delete(self, robot_id: str) -> None:

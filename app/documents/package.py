@@ -39,11 +39,12 @@ from app.documents.xacro import XacroLimits, expand_xacro
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.meshes import MESH_FORMATS
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
+from app.store import PACKAGE_DIR
 
-#: Where a package's files are stored, relative to the robot's directory; also the package
-#: name of every rewritten reference (``package://files/<path>``).
-FILES_DIR = "files"
-FILES_PREFIX = f"package://{FILES_DIR}/"
+#: The prefix of every rewritten reference (``package://files/<path>``): its package name is
+#: the directory the store keeps a robot's package files in (:data:`app.store.PACKAGE_DIR`),
+#: so Pinocchio resolves it with the robot's directory as package directory.
+FILES_PREFIX = f"package://{PACKAGE_DIR}/"
 #: The catalog's package, resolved against the example-robot-data share directory.
 CATALOG_PACKAGE = "example-robot-data"
 DESCRIPTION_TYPES = (".urdf", ".xacro", ".xml")
