@@ -136,17 +136,17 @@ class _Resolver:
     def resolve(self, tag: str, uri: str) -> tuple[str, Path]:
         """``(canonical URI, file)`` for a ``filename``; raises naming it."""
         if any(c.isspace() or ord(c) < 32 or c in "\\%?#" for c in uri) or not uri:
-            return self._bad(tag, uri, "empty, or whitespace, '\\', '%', '?' or '#' in it")
+            raise self._refuse(tag, uri, "empty, or whitespace, '\\', '%', '?' or '#' in it")
         if uri.startswith("package://"):
             pkg, _, rest = uri[len("package://") :].partition("/")
             if pkg not in self.packages:
                 if pkg == CATALOG_PACKAGE and check_resource_uri(uri) is None:
                     file = self.catalog / pkg / rest
                     if not file.is_file():
-                        return self._bad(tag, uri, "no such file in the catalog")
+                        raise self._refuse(tag, uri, "no such file in the catalog")
                     return uri, file
                 known = ", ".join(sorted(self.packages)) or "none"
-                return self._bad(
+                raise self._refuse(
                     tag, uri, f"package {pkg!r} is not in the archive (its packages: {known})"
                 )
             start = self.packages[pkg]
@@ -154,31 +154,28 @@ class _Resolver:
         elif uri.startswith("file://"):
             path = uri[len("file://") :]
             if path.startswith("/"):
-                return self._bad(tag, uri, "absolute file:// URIs are not allowed")
+                raise self._refuse(tag, uri, "absolute file:// URIs are not allowed")
             start = self.base
         elif _SCHEME.match(uri):
             scheme = uri.split("://", 1)[0]
-            return self._bad(tag, uri, f"scheme {scheme}:// is not allowed")
+            raise self._refuse(tag, uri, f"scheme {scheme}:// is not allowed")
         elif uri.startswith("/") or re.match(r"^[A-Za-z]:", uri):
-            return self._bad(tag, uri, "absolute paths are not allowed")
+            raise self._refuse(tag, uri, "absolute paths are not allowed")
         else:
             start, path = self.base, uri
         rel = posixpath.normpath(posixpath.join(start, path)) if path else ".."
         if rel == ".." or rel.startswith("../") or rel.startswith("/") or rel == ".":
-            return self._bad(tag, uri, "the path leaves the package")
+            raise self._refuse(tag, uri, "the path leaves the package")
         file = self.root / rel
         if not file.resolve().is_relative_to(self.real_root):
-            return self._bad(tag, uri, "the path leaves the package")
+            raise self._refuse(tag, uri, "the path leaves the package")
         if not file.is_file():
-            return self._bad(tag, uri, f"{rel!r} is not a file of the archive")
+            raise self._refuse(tag, uri, f"{rel!r} is not a file of the archive")
         canonical = FILES_PREFIX + rel
         why = check_resource_uri(canonical)
         if why is not None:
-            return self._bad(tag, uri, f"the file name {rel!r} is not usable ({why})")
+            raise self._refuse(tag, uri, f"the file name {rel!r} is not usable ({why})")
         return canonical, file
-
-    def _bad(self, tag: str, uri: str, reason: str) -> tuple[str, Path]:
-        raise self._refuse(tag, uri, reason)
 
     def check_obj_materials(self, uri: str, file: Path) -> None:
         """An OBJ's ``mtllib`` files must lie in the package too (assimp opens them)."""
