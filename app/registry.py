@@ -371,8 +371,8 @@ class Registry:
         check_text(description, "description")
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
-        check_documents(urdf, srdf, self.limits)
-        meshes = catalog_meshes(urdf, erd_share_dir(), "urdf", self.limits.xml)
+        root = check_documents(urdf, srdf, self.limits)
+        meshes = catalog_meshes(root, erd_share_dir(), "urdf")
         robot = build_checked_model(
             robot_id,
             urdf,

@@ -30,7 +30,7 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from xml.etree.ElementTree import tostring
+from xml.etree.ElementTree import Element, tostring
 
 from app.documents.archive import member_parts
 from app.documents.mjcf import mjcf_to_urdf
@@ -261,15 +261,16 @@ def read_package(
     return package
 
 
-def catalog_meshes(urdf: str, catalog: Path, fld: str, limits: XmlLimits) -> dict[str, Path]:
-    """The meshes of a single uploaded URDF (no package): catalog files only.
+def catalog_meshes(urdf: Element, catalog: Path, fld: str) -> dict[str, Path]:
+    """The meshes of a single uploaded URDF (no package; its checked root element, see
+    :func:`app.documents.urdf.check_documents`): catalog files only.
 
     Each ``<mesh filename>`` (already a safe ``package://`` URI, see
     :func:`app.documents.urdf.check_resource_uri`) must name a file of
     ``package://example-robot-data/...``; anything else is refused naming it.
     """
     meshes: dict[str, Path] = {}
-    for element in parse_literal_xml(urdf, fld, limits).iter("mesh"):
+    for element in urdf.iter("mesh"):
         uri = element.get("filename")
         if uri is None:
             continue

@@ -299,17 +299,19 @@ def check_urdf_document(
 
 def check_documents(
     urdf: str, srdf: str | None, limits: UrdfLimits, urdf_field: str = "urdf"
-) -> None:
+) -> Element:
     """The upload checks of a URDF (and its SRDF) within ``limits``: parsed with
     literal names as Pinocchio reads them, no DTD or entities, bounded work
     (:func:`check_urdf_document`, :func:`~app.documents.srdf.check_srdf_document`); raises
-    :class:`InvalidInputError` naming ``urdf_field`` or ``srdf``."""
+    :class:`InvalidInputError` naming ``urdf_field`` or ``srdf``. Returns the checked URDF's
+    root element (for further reading without parsing it again)."""
     root = parse_literal_xml(urdf, urdf_field, limits.xml)
     check_urdf_document(root, urdf_field, limits)
     if srdf is not None:
         links = {link.get("name", "") for link in root.findall("link")}
         joints = parse_urdf_joints(urdf)
         check_srdf_document(srdf, links, "srdf", limits.xml, joints)
+    return root
 
 
 def build_checked_model(
