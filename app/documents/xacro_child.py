@@ -379,11 +379,10 @@ def main(parent: int | None = None) -> None:
     """Read the request from stdin, expand, write the answer to stdout (one JSON each).
 
     ``parent`` is the PID of the process that started this one: if it is already gone
-    (this process was re-parented before it could ask for the death signal), exit.
+    (this process was re-parented before it could ask for the death signal), this process
+    is killed at once (see :func:`app.kinematics.procwatch.set_parent_death_signal`).
     """
-    set_parent_death_signal()
-    if parent is not None and os.getppid() != parent:
-        os._exit(1)
+    set_parent_death_signal(parent=parent)
     request = json.loads(sys.stdin.buffer.read())
     _limit_self(int(request["memory_bytes"]), int(request["cpu_s"]))
     try:
