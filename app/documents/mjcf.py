@@ -206,21 +206,10 @@ def check_mjcf_files(root: Path, description: str, limits: XmlLimits) -> tuple[P
     return main, tree
 
 
-def _numbers(element: Element, attr: str, count: int) -> list[float] | None:
+def _numbers(element: Element, attr: str) -> list[float] | None:
+    """The numbers of ``attr`` (already checked by :func:`_check_numbers`), or ``None``."""
     raw = element.get(attr)
-    if raw is None:
-        return None
-    try:
-        values = [float(v) for v in raw.split()]
-    except ValueError:
-        values = []
-    if len(values) != count or not all(math.isfinite(v) for v in values):
-        raise InvalidInputError(
-            f"<body name={element.get('name')!r}> {attr}={raw[:60]!r}: "
-            f"expected {count} finite numbers",
-            FIELD,
-        )
-    return values
+    return None if raw is None else [float(v) for v in raw.split()]
 
 
 def _axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
@@ -232,7 +221,8 @@ def root_body_pose(tree: Element) -> pin.SE3:
     ``quat``, ``euler`` or ``axisangle``, in the ``<compiler>``'s angle unit and Euler
     sequence). Pinocchio's MJCF parser reads only the first body under ``<worldbody>`` and,
     when that body has no joint, drops its pose: the URDF puts it back. More than one
-    top-level body, or ``xyaxes``/``zaxis`` on it, is refused."""
+    top-level body, or ``xyaxes``/``zaxis`` on it, is refused. ``tree`` is one that
+    :func:`check_mjcf_files` gave (its numbers are checked)."""
     degree, seq = True, "xyz"
     for compiler in tree.iter("compiler"):
         degree = compiler.get("angle", "degree" if degree else "radian") == "degree"
@@ -250,17 +240,17 @@ def root_body_pose(tree: Element) -> pin.SE3:
     for attr in ("xyaxes", "zaxis"):
         if body.get(attr) is not None:
             raise InvalidInputError(f"the root body's {attr!r} is not supported", FIELD)
-    if (quat := _numbers(body, "quat", 4)) is not None:
+    if (quat := _numbers(body, "quat")) is not None:
         rotation = pin.Quaternion(*quat).normalized().matrix()  # w x y z
-    elif (axisangle := _numbers(body, "axisangle", 4)) is not None:
+    elif (axisangle := _numbers(body, "axisangle")) is not None:
         rotation = _axis_rotation(np.array(axisangle[:3]), axisangle[3] * unit)
-    elif (euler := _numbers(body, "euler", 3)) is not None:
+    elif (euler := _numbers(body, "euler")) is not None:
         if len(seq) != 3 or any(c not in "xyzXYZ" for c in seq):
             raise InvalidInputError(f"<compiler eulerseq={seq[:10]!r}> is not valid", FIELD)
         for axis_name, angle in zip(seq, euler, strict=True):
             step = _axis_rotation(np.eye(3)["xyz".index(axis_name.lower())], angle * unit)
             rotation = rotation @ step if axis_name.islower() else step @ rotation
-    pos = _numbers(body, "pos", 3) or [0.0, 0.0, 0.0]
+    pos = _numbers(body, "pos") or [0.0, 0.0, 0.0]
     return pin.SE3(rotation, np.array(pos))
 
 

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from xml.etree.ElementTree import Element, tostring
 
-from app.documents.archive import member_parts
+from app.documents.manifests import package_names, read_member
 from app.documents.mjcf import mjcf_to_urdf
 from app.documents.urdf import check_resource_uri, resource_elements
 from app.documents.xacro import XacroLimits, expand_xacro
@@ -48,8 +48,6 @@ FILES_PREFIX = f"package://{PACKAGE_DIR}/"
 #: The catalog's package, resolved against the example-robot-data share directory.
 CATALOG_PACKAGE = "example-robot-data"
 DESCRIPTION_TYPES = (".urdf", ".xacro", ".xml")
-#: Largest description, SRDF or package.xml read from a package (bytes).
-MAX_DOCUMENT_BYTES = 8 * 1024 * 1024
 _SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.-]*://")
 _MTLLIB = re.compile(rb"^\s*mtllib\s+(.+?)\s*$", re.MULTILINE)
 
@@ -65,56 +63,6 @@ class Package:
     urdf: str
     srdf: str | None
     meshes: dict[str, Path] = field(default_factory=dict)
-
-
-def _read_member(root: Path, path: str, what: str, fld: str) -> tuple[str, str]:
-    """``(normalised path, text)`` of the archive file ``path``."""
-    try:
-        parts = member_parts(path)
-    except InvalidInputError as exc:
-        raise InvalidInputError(exc.message.replace("member ", f"{what} ", 1), fld) from None
-    file = root.joinpath(*parts)
-    if not parts or not file.is_file() or file.is_symlink():
-        raise InvalidInputError(f"{path[:200]!r} is not a file of the archive", fld)
-    if file.stat().st_size > MAX_DOCUMENT_BYTES:
-        raise InvalidInputError(f"{path[:200]!r} is larger than {MAX_DOCUMENT_BYTES} bytes", fld)
-    try:
-        text = file.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError:
-        raise InvalidInputError(f"{path[:200]!r} is not UTF-8 text", fld) from None
-    return "/".join(parts), text
-
-
-def package_names(root: Path, limits: XmlLimits) -> dict[str, str]:
-    """Package name → its directory in the archive (``""`` for the archive's root).
-
-    From each ``package.xml``'s ``<name>``, then every top-level folder not named so.
-    Two ``package.xml`` with the same name are refused.
-    """
-    names: dict[str, str] = {}
-    for manifest in sorted(root.rglob("package.xml")):
-        if not manifest.is_file():
-            continue
-        rel = manifest.relative_to(root).as_posix()
-        _, text = _read_member(root, rel, "package.xml", "archive")
-        try:
-            doc = parse_literal_xml(text, "archive", limits)
-        except InvalidInputError as exc:
-            raise InvalidInputError(f"{rel}: {exc.message}", "archive") from None
-        name = (doc.findtext("name") or "").strip()
-        if doc.tag != "package" or not name:
-            continue
-        folder = posixpath.dirname(rel)
-        if name in names:
-            raise InvalidInputError(
-                f"package {name!r} is defined twice ({names[name] or '.'}/package.xml and {rel})",
-                "archive",
-            )
-        names[name] = folder
-    for top in sorted(root.iterdir()):
-        if top.is_dir() and top.name not in names:
-            names[top.name] = top.name
-    return names
 
 
 class _Resolver:
@@ -237,13 +185,15 @@ def read_package(
             f"{description[:200]!r}: the description must be a .urdf, .xacro or MJCF .xml file",
             "description",
         )
-    rel, text = _read_member(root, description, "description", "description")
+    rel, text = read_member(root, description, "description", "description")
+    packages = package_names(root, limits)
     if lowered.endswith(".xacro"):
         urdf = expand_xacro(
             root,
             rel,
             xacro_args,
             limits,
+            packages=packages,
             timeout_s=xacro_limits.timeout_s,
             memory_bytes=xacro_limits.memory_bytes,
             max_output_chars=xacro_limits.max_output_chars,
@@ -252,12 +202,10 @@ def read_package(
         urdf = mjcf_to_urdf(root, rel, limits)
     else:
         urdf = text
-    resolver = _Resolver(
-        root, posixpath.dirname(rel), package_names(root, limits), catalog, "description"
-    )
+    resolver = _Resolver(root, posixpath.dirname(rel), packages, catalog, "description")
     package = rewrite_references(urdf, resolver, limits)
     if srdf is not None:
-        package.srdf = _read_member(root, srdf, "srdf", "srdf")[1]
+        package.srdf = read_member(root, srdf, "srdf", "srdf")[1]
     return package
 
 

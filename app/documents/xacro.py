@@ -29,6 +29,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import app
+from app.documents.manifests import package_names
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
@@ -181,6 +182,7 @@ def expand_xacro(
     args: Mapping[str, str],
     limits: XmlLimits,
     *,
+    packages: Mapping[str, str] | None = None,
     timeout_s: float = XACRO_TIMEOUT_S,
     memory_bytes: int = XACRO_MEMORY_BYTES,
     max_output_chars: int = XACRO_MAX_OUTPUT_CHARS,
@@ -198,6 +200,10 @@ def expand_xacro(
         written as text).
     limits
         XML limits applied to every file read and to the result.
+    packages
+        The names ``$(find <pkg>)`` knows: package name → its folder relative to ``root``,
+        as :func:`app.documents.manifests.package_names` gives them (read from ``root``
+        when not given).
     timeout_s, memory_bytes, max_output_chars
         Bounds of the child process: wall-clock time, address space it may add, length
         of the expanded document.
@@ -206,14 +212,18 @@ def expand_xacro(
     ------
     InvalidInputError
         Field ``description`` (message naming the file, relative to ``root``, and the
-        line), or ``xacro_args`` / ``xacro_args.<name>`` for the arguments.
+        line), or ``xacro_args`` / ``xacro_args.<name>`` for the arguments (``archive``
+        for an unreadable ``package.xml`` when ``packages`` is not given).
     """
     checked_args = check_xacro_args(args)
     path = _description_path(root, description)
+    if packages is None:
+        packages = package_names(root, limits)
     request = {
         "root": os.path.realpath(root),
         "description": path.as_posix(),
         "args": checked_args,
+        "packages": dict(packages),
         "limits": asdict(limits),
         "memory_bytes": int(memory_bytes),
         "cpu_s": math.ceil(1.5 * timeout_s) + 1,  # a backstop: the wall-clock timeout rules

@@ -13,8 +13,8 @@ xacro is confined by replacing the few functions through which it touches the sy
   their real path (symlinks resolved) is a regular file inside the package root, and each
   XML file passes :func:`app.kinematics.xmldoc.parse_literal_xml` with the upload's limits
   before xacro parses it;
-- ``$(find pkg)`` names the package itself only (the ``<name>`` of a ``package.xml`` in
-  the root or a top-level folder, or a top-level folder's name);
+- ``$(find pkg)`` names only the archive's packages, as the parent found them with
+  :func:`app.documents.manifests.package_names` (the same names ``package://`` takes);
 - ``$(env NAME)`` / ``$(optenv NAME default)`` see no environment variable (every one is
   unset: ``env`` is an error, ``optenv`` gives its default); ``$(cwd)`` is refused;
 - ``${...}`` and ``$(eval ...)`` go through :mod:`app.documents.xacro_expr`; ``python.type``
@@ -145,27 +145,6 @@ def parse_file(path: str, what: str = "xacro:include of") -> xml.dom.minidom.Doc
         return _LineBuilder(rel).parseString(text.encode("utf-8"))
     except expat.ExpatError as exc:  # pragma: no cover - parse_literal_xml saw it first
         raise Refusal(f"{rel} line {exc.lineno}: not well-formed XML") from None
-
-
-def find_packages(root: Path, limits: XmlLimits) -> dict[str, Path]:
-    """Package name → directory: ``package.xml`` ``<name>`` in the root or a top-level
-    folder, else the top-level folder's name."""
-    found: dict[str, Path] = {}
-    candidates = [root] + sorted(p for p in root.iterdir() if p.is_dir() and not p.is_symlink())
-    for directory in candidates:
-        manifest = directory / "package.xml"
-        name = None
-        if manifest.is_file() and not manifest.is_symlink():
-            try:
-                tree = parse_literal_xml(_read_text(manifest, "package.xml"), "archive", limits)
-                name = (tree.findtext("name") or "").strip() or None
-            except (InvalidInputError, Refusal, OSError):
-                name = None
-        if name is None and directory != root:
-            name = directory.name
-        if name is not None:
-            found.setdefault(name, directory)
-    return found
 
 
 def _install_hooks(xacro: Any) -> None:
@@ -373,13 +352,21 @@ def _limit_self(memory_bytes: int, cpu_s: int) -> None:
             pass
 
 
-def expand(root: Path, description: str, args: dict[str, str], limits: XmlLimits) -> str:
-    """Expand ``root / description`` (in this process: call it only in the child)."""
+def expand(
+    root: Path,
+    description: str,
+    args: dict[str, str],
+    limits: XmlLimits,
+    packages: dict[str, str],
+) -> str:
+    """Expand ``root / description`` (in this process: call it only in the child).
+
+    ``packages`` maps each name ``$(find <pkg>)`` knows to its folder relative to ``root``.
+    """
     global _STATE
     import xacro
 
-    _STATE = _State(root, limits, {}, {})
-    _STATE.packages = find_packages(root, limits)
+    _STATE = _State(root, limits, {name: root / folder for name, folder in packages.items()}, {})
     _install_hooks(xacro)
     path = str(root / description)
     xacro.init_stacks(path)
@@ -392,11 +379,10 @@ def main(parent: int | None = None) -> None:
     """Read the request from stdin, expand, write the answer to stdout (one JSON each).
 
     ``parent`` is the PID of the process that started this one: if it is already gone
-    (this process was re-parented before it could ask for the death signal), exit.
+    (this process was re-parented before it could ask for the death signal), this process
+    is killed at once (see :func:`app.kinematics.procwatch.set_parent_death_signal`).
     """
-    set_parent_death_signal()
-    if parent is not None and os.getppid() != parent:
-        os._exit(1)
+    set_parent_death_signal(parent=parent)
     request = json.loads(sys.stdin.buffer.read())
     _limit_self(int(request["memory_bytes"]), int(request["cpu_s"]))
     try:
@@ -405,6 +391,7 @@ def main(parent: int | None = None) -> None:
             request["description"],
             request["args"],
             XmlLimits(**request["limits"]),
+            request["packages"],
         )
         if len(urdf) > request["max_output_chars"]:
             answer = {

@@ -32,15 +32,18 @@ from collections.abc import Callable
 PR_SET_PDEATHSIG = 1
 
 
-def set_parent_death_signal(sig: int = signal.SIGKILL) -> bool:
+def set_parent_death_signal(sig: int = signal.SIGKILL, parent: int | None = None) -> bool:
     """Have the kernel send ``sig`` to this process when its parent exits (Linux only).
 
-    Returns whether it was set. If the parent exits while this is being set (this process
-    is re-parented meanwhile), ``sig`` is sent at once.
+    Returns whether it was set. If the parent has already exited (this process was
+    re-parented, before or while this is being set), ``sig`` is sent at once. ``parent``
+    is the PID of the process that started this one, when known (passed down by it):
+    without it, only a re-parenting while this runs is seen.
     """
     if not sys.platform.startswith("linux"):
         return False
-    parent = os.getppid()
+    if parent is None:
+        parent = os.getppid()
     try:
         libc = ctypes.CDLL(None, use_errno=True)
         if libc.prctl(PR_SET_PDEATHSIG, int(sig), 0, 0, 0) != 0:
