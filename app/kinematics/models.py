@@ -342,13 +342,15 @@ class RobotModel:
                 "joint", name, field, self.joint_names + list(self._mimic_by_name), list_known=True
             ) from None
 
-    def supporting_joints(self, frame: str) -> np.ndarray:
+    def supporting_joints(self, frame: str, among: np.ndarray | None = None) -> np.ndarray:
         """Wire indices of the joints that move ``frame``, in wire order: its kinematic chain,
         plus the leader of every mimic follower on it (the leader of the Panda's
-        ``panda_finger_joint2`` moves ``panda_rightfinger``; :func:`.mimic.with_leaders`)."""
+        ``panda_finger_joint2`` moves ``panda_rightfinger``; :func:`.mimic.with_leaders`);
+        only those among the wire indices ``among`` (e.g. a planning group's) when given."""
         parent = self.model.frames[self.frame_id(frame)].parentJoint
         support = with_leaders(self.model.supports[parent], self.mimic_joints)
-        return np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
+        cols = np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
+        return cols if among is None else cols[np.isin(cols, among)]
 
     # --------------------------------------------------------------------- configurations
     @property
