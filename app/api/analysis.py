@@ -202,8 +202,7 @@ async def compute_manipulability(
 ) -> ORJSONResponse:
     """Manipulability, singularity and ellipsoids of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     res = manipulability_core(
         robot,
@@ -273,8 +272,7 @@ async def compute_statics(
     if (body.wrench is None) == (body.torques is None):
         raise InvalidInputError("give exactly one of wrench or torques", "wrench")
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     joints = None if grp is None else grp.indices
     names = robot.joint_names if grp is None else list(grp.joints)

@@ -172,7 +172,7 @@ async def check_collisions(
     never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
     """
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot, group(robot, body.group))
+    _, q = body.group_config(robot)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     built = robot.extras.get(f"collision.{body.geometry}") is not None
     heavy = (

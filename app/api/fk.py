@@ -83,8 +83,7 @@ async def compute_fk(robot_id: RobotId, body: FKRequest, reg: RegistryDep) -> OR
     Out-of-limit configurations are computed, and flagged with ``within_limits: false``.
     """
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frames = body.frames if body.frames else [default_frame(robot, grp, None)]
     poses = forward_kinematics(robot, q, frames)
     outside = robot.limit_violations(q)
