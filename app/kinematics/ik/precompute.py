@@ -142,15 +142,17 @@ def ik_chain(robot: RobotModel, frame: str, group: Group | None = None) -> IKCha
     robot.frame_id(frame)
     if group is None:
         return robot.lazy(f"ik.chain:{frame}", lambda r: IKChain(r, frame))
-    if robot.supporting_joints(frame, group.indices).size == 0:
-        raise InvalidInputError(
-            f"no joint of group {group.name!r} ({', '.join(group.joints) or 'none'}) moves "
-            f"frame {frame!r}",
-            "group",
-        )
-    return robot.lazy(
-        f"ik.chain:{frame}|group:{group.name}", lambda r: IKChain(r, frame, group.indices)
-    )
+
+    def build(r: RobotModel) -> IKChain:  # checked once, with the chain (not per request)
+        if r.supporting_joints(frame, group.indices).size == 0:
+            raise InvalidInputError(
+                f"no joint of group {group.name!r} ({', '.join(group.joints) or 'none'}) moves "
+                f"frame {frame!r}",
+                "group",
+            )
+        return IKChain(r, frame, group.indices)
+
+    return robot.lazy(f"ik.chain:{frame}|group:{group.name}", build)
 
 
 def k_smallest(d: np.ndarray, k: int) -> np.ndarray:
