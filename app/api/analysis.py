@@ -16,7 +16,7 @@ import numpy as np
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
-from app.api.body import body_schema, configurations, decode_body
+from app.api.body import body_schema, decode_body, group_configurations
 from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
 from app.api.jacobian import REFERENCE_DOC
@@ -34,7 +34,7 @@ from app.kinematics.analysis import (
     compute_manipulability as manipulability_core,
 )
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.groups import default_frame, expand_rows, group, row_width
+from app.kinematics.groups import Group, default_frame, group
 from app.kinematics.jacobian import Reference
 from app.kinematics.models import RobotModel
 
@@ -202,8 +202,7 @@ async def compute_manipulability(
 ) -> ORJSONResponse:
     """Manipulability, singularity and ellipsoids of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     res = manipulability_core(
         robot,
@@ -220,12 +219,12 @@ async def compute_manipulability(
 
 def _batch_body(
     raw: bytes, robot: RobotModel, limit: int
-) -> tuple[ManipulabilityBatchRequest, np.ndarray]:
-    """Decode a batch body: the task options and the checked (full) configurations."""
+) -> tuple[ManipulabilityBatchRequest, Group | None, np.ndarray]:
+    """Decode a batch body: the task options, the group and the checked (full)
+    configurations."""
     body, rows = decode_body(raw, ManipulabilityBatchRequest, {"configurations": None})
     grp = group(robot, body.group)
-    rows = rows["configurations"]
-    return body, expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
+    return body, grp, group_configurations(robot, grp, rows["configurations"], limit)
 
 
 @router.post(
@@ -242,8 +241,7 @@ async def compute_manipulability_batch(
     robot = await load_robot(reg, robot_id)
     raw = await request.body()
     limit = request.app.state.settings.max_batch
-    body, qs = await offload(_batch_body, raw, robot, limit)
-    grp = group(robot, body.group)
+    body, grp, qs = await offload(_batch_body, raw, robot, limit)
     frame = default_frame(robot, grp, body.frame)
     out = await offload(
         manipulability_batch,
@@ -274,8 +272,7 @@ async def compute_statics(
     if (body.wrench is None) == (body.torques is None):
         raise InvalidInputError("give exactly one of wrench or torques", "wrench")
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     joints = None if grp is None else grp.indices
     names = robot.joint_names if grp is None else list(grp.joints)

@@ -5,7 +5,8 @@ call :func:`decode_body`: orjson, then the request model, except that plain nume
 matrices (``configurations``, ``positions`` …) skip pydantic and become NumPy arrays
 directly; anything off falls back to full validation, which names the offending element.
 :func:`configurations` is the one check of a batch of configurations (count, widths, joint
-bounds). Such routes document their body with :func:`body_schema`.
+bounds), :func:`group_configurations` its form for requests with a planning group. Such
+routes document their body with :func:`body_schema`.
 """
 
 from __future__ import annotations
@@ -23,7 +24,8 @@ from starlette.responses import Response
 
 from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError, problem
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import check_joint_values
+from app.kinematics.groups import Group, expand_rows, row_width
+from app.kinematics.models import RobotModel, check_joint_values
 from app.kinematics.text import SURROGATE_REASON, find_surrogate
 
 S = TypeVar("S", bound=BaseModel)
@@ -120,6 +122,18 @@ def configurations(
         )
     check_joint_values(rows, "configurations")
     return rows
+
+
+def group_configurations(
+    robot: RobotModel,
+    grp: Group | None,
+    rows: np.ndarray | Sequence[Sequence[float]],
+    limit: int,
+) -> np.ndarray:
+    """A batch of full configurations (N, n), checked by :func:`configurations`: rows of one
+    value per joint, or with a group, of the group's joints only (the others neutral:
+    :func:`~app.kinematics.groups.expand_rows`)."""
+    return expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
 
 
 def parse_json(raw: bytes) -> Any:

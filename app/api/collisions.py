@@ -14,7 +14,7 @@ import numpy as np
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field, Strict
 
-from app.api.body import configurations
+from app.api.body import group_configurations
 from app.api.deps import RegistryDep, SceneStoreDep, load_robot
 from app.api.errors import ERROR_RESPONSES
 from app.api.offload import offload, offload_cancellable
@@ -23,7 +23,7 @@ from app.api.scenes import ObstacleIn, resolve_obstacles
 from app.api.schemas import ConfigurationIn, JointValue, RobotId, Schema, Vec3Out, group_field
 from app.kinematics.collision import collision_model, report_json
 from app.kinematics.collision_pairs import collision_link_pairs, collision_links
-from app.kinematics.groups import expand_rows, group, row_width
+from app.kinematics.groups import group
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle
 
@@ -172,7 +172,7 @@ async def check_collisions(
     never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
     """
     robot = await load_robot(reg, robot_id)
-    q = body.config(robot, group(robot, body.group))
+    _, q = body.group_config(robot)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     built = robot.extras.get(f"collision.{body.geometry}") is not None
     heavy = (
@@ -231,9 +231,8 @@ async def check_collisions_batch(
     """Check many configurations (e.g. a trajectory's waypoints) in the work pool."""
     robot = await load_robot(reg, robot_id)
     grp = group(robot, body.group)
-    rows = body.configurations
     limit = request.app.state.settings.max_batch
-    qs = expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
+    qs = group_configurations(robot, grp, body.configurations, limit)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     out = await offload_cancellable(request, _check_batch, robot, qs, obstacles, body)
     return ORJSONResponse(out)

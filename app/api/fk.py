@@ -6,7 +6,7 @@ import numpy as np
 from fastapi import APIRouter, Request
 from pydantic import BaseModel, Field
 
-from app.api.body import body_schema, configurations, decode_body
+from app.api.body import body_schema, decode_body, group_configurations
 from app.api.deps import RegistryDep, SettingsDep, load_robot
 from app.api.errors import ERROR_RESPONSES
 from app.api.offload import offload
@@ -22,7 +22,7 @@ from app.api.schemas import (
     group_field,
 )
 from app.kinematics.fk import forward_kinematics, forward_kinematics_batch
-from app.kinematics.groups import default_frame, expand_rows, group, row_width
+from app.kinematics.groups import default_frame, group
 from app.kinematics.models import RobotModel
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
@@ -83,8 +83,7 @@ async def compute_fk(robot_id: RobotId, body: FKRequest, reg: RegistryDep) -> OR
     Out-of-limit configurations are computed, and flagged with ``within_limits: false``.
     """
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frames = body.frames if body.frames else [default_frame(robot, grp, None)]
     poses = forward_kinematics(robot, q, frames)
     outside = robot.limit_violations(q)
@@ -129,8 +128,7 @@ async def compute_fk_batch(
 def _fk_batch(robot: RobotModel, raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray]:
     body, rows = decode_body(raw, FKBatchRequest, {"configurations": None})
     grp = group(robot, body.group)
-    rows = rows["configurations"]
-    qs = expand_rows(robot, grp, configurations(rows, row_width(robot, grp, rows), limit))
+    qs = group_configurations(robot, grp, rows["configurations"], limit)
     frame = default_frame(robot, grp, body.frame)
     positions, quats = forward_kinematics_batch(robot, qs, frame)
     return frame, positions, quats

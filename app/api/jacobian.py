@@ -9,7 +9,7 @@ from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
 from app.api.responses import ORJSONResponse
 from app.api.schemas import ConfigurationIn, RobotId
-from app.kinematics.groups import default_frame, group
+from app.kinematics.groups import default_frame
 from app.kinematics.jacobian import Reference, frame_jacobian
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
@@ -55,8 +55,7 @@ async def compute_jacobian(
 ) -> ORJSONResponse:
     """Geometric Jacobian of a frame at one configuration."""
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     J = frame_jacobian(robot, q, frame, body.reference)
     names = robot.joint_names

@@ -13,7 +13,7 @@ import numpy as np
 from fastapi import Path
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, Strict
 
-from app.kinematics.groups import Group, configuration
+from app.kinematics.groups import Group, configuration, group
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
 from app.kinematics.text import SURROGATE_REASON, has_surrogate
 
@@ -91,6 +91,8 @@ class ConfigurationIn(Schema):
 
     group: str | None = group_field()
 
-    def config(self, robot: RobotModel, grp: Group | None = None) -> np.ndarray:
-        """The validated wire configuration for ``robot`` (``grp``: the resolved ``group``)."""
-        return configuration(robot, grp, self.q, self.joint_positions)
+    def group_config(self, robot: RobotModel) -> tuple[Group | None, np.ndarray]:
+        """The ``group`` resolved on ``robot`` (``None`` without one) and the validated wire
+        configuration (with a group, ``q`` may hold its joints only)."""
+        grp = group(robot, self.group)
+        return grp, configuration(robot, grp, self.q, self.joint_positions)

@@ -13,7 +13,7 @@ from app.api.errors import ERROR_RESPONSES
 from app.api.responses import ORJSONResponse
 from app.api.schemas import ConfigurationIn, Finite, RobotId
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.groups import default_frame, group
+from app.kinematics.groups import default_frame
 from app.kinematics.velocity import (
     MAX_DAMPING,
     MAX_RATE,
@@ -94,8 +94,7 @@ async def compute_velocity(
     if (body.joint_velocities is None) == (body.twist is None):
         raise InvalidInputError("give exactly one of joint_velocities or twist", "twist")
     robot = await load_robot(reg, robot_id)
-    grp = group(robot, body.group)
-    q = body.config(robot, grp)
+    grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     robot.frame_id(frame)
     out = {"robot_id": robot.id, "frame": frame, "reference": body.reference, "q": q}

@@ -12,7 +12,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.semantics import parse_semantics, resolve
+from app.kinematics.semantics import resolve, semantics_of
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
 
@@ -24,7 +24,7 @@ def check_srdf_document(
     joints: Mapping[str, Mapping[str, Any]] | None = None,
 ) -> None:
     """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs,
-    and, given the URDF's ``joints`` (:func:`app.kinematics.models.parse_urdf_joints`),
+    and, given the URDF's ``joints`` (:func:`app.kinematics.models.urdf_joint_table`),
     groups, end effectors and group states that resolve (422 naming the SRDF element)."""
     root = parse_literal_xml(text, field, limits)
     if root.tag != "robot":
@@ -37,4 +37,4 @@ def check_srdf_document(
                     f"<disable_collisions {attr}={link!r}>: no such link in the URDF", field
                 )
     if joints is not None:
-        resolve(parse_semantics(text, field, limits), joints, field)
+        resolve(semantics_of(root, field), joints, field)

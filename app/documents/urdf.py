@@ -15,7 +15,7 @@ from xml.etree.ElementTree import Element
 
 from app.documents.srdf import check_srdf_document
 from app.kinematics.errors import InvalidInputError, UnknownNameError
-from app.kinematics.models import MAX_JOINT_VALUE, RobotModel, parse_urdf_joints
+from app.kinematics.models import MAX_JOINT_VALUE, RobotModel, urdf_joint_table
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
 #: Joint types a URDF upload may use (the wire has one value per actuated joint).
@@ -309,8 +309,7 @@ def check_documents(
     check_urdf_document(root, urdf_field, limits)
     if srdf is not None:
         links = {link.get("name", "") for link in root.findall("link")}
-        joints = parse_urdf_joints(urdf)
-        check_srdf_document(srdf, links, "srdf", limits.xml, joints)
+        check_srdf_document(srdf, links, "srdf", limits.xml, urdf_joint_table(root))
     return root
 
 

@@ -252,11 +252,9 @@ def support_columns(
     """Wire indices of the joints that move ``frame`` (among ``joints``, e.g. a planning
     group's, when given); a frame none of them moves is an error."""
     robot.frame_id(frame, field=field)
-    cols = robot.supporting_joints(frame)
-    if joints is not None:
-        cols = cols[np.isin(cols, joints)]
-        if cols.size == 0:
-            raise InvalidInputError(f"no joint of the group moves frame {frame!r}", "group")
+    cols = robot.supporting_joints(frame, joints)
+    if cols.size == 0 and joints is not None:
+        raise InvalidInputError(f"no joint of the group moves frame {frame!r}", "group")
     if cols.size == 0:
         raise InvalidInputError(f"frame {frame!r} is not moved by any joint", field)
     return cols

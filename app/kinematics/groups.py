@@ -10,8 +10,9 @@ With a group, a request
   (:func:`configuration`; the full-length form is still accepted); the other joints take the
   ``base`` configuration's values (the seed's for IK, neutral elsewhere);
 - defaults its frame to the group's tip (:func:`default_frame`);
-- moves only the group's joints among those that move the frame (:func:`columns`): Jacobian
-  columns, IK's active joints, manipulability and velocity columns.
+- moves only the group's joints among those that move the frame
+  (:meth:`RobotModel.supporting_joints` with ``among``): Jacobian columns, IK's active
+  joints, manipulability and velocity columns.
 
 Named states (``<group_state>``) are configurations by name (:func:`state_configuration`),
 e.g. an IK ``"seed": "ready"``.
@@ -90,14 +91,6 @@ def default_frame(robot: RobotModel, grp: Group | None, frame: str | None) -> st
     if frame:
         return frame
     return grp.tip if grp is not None else robot.ee_frame
-
-
-def columns(robot: RobotModel, grp: Group | None, frame: str) -> np.ndarray:
-    """Wire indices of the joints that move ``frame`` and belong to the group (all without)."""
-    support = robot.supporting_joints(frame)
-    if grp is None:
-        return support
-    return support[np.isin(support, grp.indices)]
 
 
 def _length_error(robot: RobotModel, grp: Group, got: object, field: str) -> InvalidInputError:

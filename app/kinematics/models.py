@@ -21,6 +21,7 @@ import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
+from xml.etree.ElementTree import Element
 
 import numpy as np
 import pinocchio as pin
@@ -148,13 +149,12 @@ def _model_axis(jm: Any) -> tuple[float, float, float] | None:
     return (float(part[0]), float(part[1]), float(part[2]))
 
 
-def parse_urdf_joints(urdf_text: str) -> dict[str, dict[str, Any]]:
-    """Joint descriptions from URDF text, keyed by joint name.
+def urdf_joint_table(root: Element) -> dict[str, dict[str, Any]]:
+    """Joint descriptions of a parsed URDF, keyed by joint name.
 
-    The XML is read with literal (namespace-unaware) names, as Pinocchio's URDF parser
-    reads it (:func:`app.kinematics.xmldoc.parse_literal_xml`).
+    ``root`` is the document read with literal (namespace-unaware) names, as Pinocchio's
+    URDF parser reads it (:func:`app.kinematics.xmldoc.parse_literal_xml`).
     """
-    root = parse_literal_xml(urdf_text, "urdf", TRUSTED)
     joints: dict[str, dict[str, Any]] = {}
     for j in root.iter("joint"):
         name = j.get("name")
@@ -228,7 +228,8 @@ class RobotModel:
         self._lock = threading.Lock()
         self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
 
-        urdf_joints = parse_urdf_joints(urdf_text)
+        root = parse_literal_xml(urdf_text, "urdf", TRUSTED)  # the one parse of the URDF here
+        urdf_joints = urdf_joint_table(root)
         #: The URDF's joints (fixed and mimic included), name → description.
         self.urdf_joints = urdf_joints
         #: The SRDF's groups, end effectors and named states (empty without an SRDF).
@@ -312,15 +313,14 @@ class RobotModel:
         srdf_tip = self.semantics.default_tip()
         if ee_frame is None and srdf_tip in self._frame_ids:
             ee_frame = srdf_tip  # rule 1 of the default tip: the SRDF's end effector
-        self.ee_frame = ee_frame if ee_frame is not None else self._default_tip()
+        self.ee_frame = ee_frame if ee_frame is not None else self._default_tip(bare_links(root))
         self.frame_id(self.ee_frame, field="ee_frame")
 
     # ------------------------------------------------------------------ frames and joints
-    def _default_tip(self) -> str:
+    def _default_tip(self, bare: set[str]) -> str:
         """The tip of the longest serial chain that is not a gripper finger (see
-        :mod:`app.kinematics.tip`)."""
+        :mod:`app.kinematics.tip`; ``bare``: the names of the links without geometry)."""
         links = [f for f in self.frames if f.kind == "link"] or self.frames
-        bare = bare_links(self.urdf_text)
         fid = default_tip(
             self.model, [f.pin_id for f in links], [f.pin_id for f in links if f.name in bare]
         )
@@ -342,13 +342,15 @@ class RobotModel:
                 "joint", name, field, self.joint_names + list(self._mimic_by_name), list_known=True
             ) from None
 
-    def supporting_joints(self, frame: str) -> np.ndarray:
+    def supporting_joints(self, frame: str, among: np.ndarray | None = None) -> np.ndarray:
         """Wire indices of the joints that move ``frame``, in wire order: its kinematic chain,
         plus the leader of every mimic follower on it (the leader of the Panda's
-        ``panda_finger_joint2`` moves ``panda_rightfinger``; :func:`.mimic.with_leaders`)."""
+        ``panda_finger_joint2`` moves ``panda_rightfinger``; :func:`.mimic.with_leaders`);
+        only those among the wire indices ``among`` (e.g. a planning group's) when given."""
         parent = self.model.frames[self.frame_id(frame)].parentJoint
         support = with_leaders(self.model.supports[parent], self.mimic_joints)
-        return np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
+        cols = np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
+        return cols if among is None else cols[np.isin(cols, among)]
 
     # --------------------------------------------------------------------- configurations
     @property

@@ -31,7 +31,7 @@ The robot's default tip from the SRDF (rule 1 of the default tip) is the ``paren
 the first ``<end_effector>`` in document order (:meth:`Semantics.default_tip`).
 
 Everything here is pure: the URDF enters as the joint table of
-:func:`app.kinematics.models.parse_urdf_joints` (name → type, parent, child, limits,
+:func:`app.kinematics.models.urdf_joint_table` (name → type, parent, child, limits,
 mimic). :func:`resolve` raises :class:`InvalidInputError` naming the SRDF element for every
 inconsistency, so uploads are checked with it (:mod:`app.documents.srdf`) and models built
 from checked documents resolve without error.
@@ -43,6 +43,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
+from xml.etree.ElementTree import Element
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import TRUSTED, XmlLimits, parse_literal_xml
@@ -124,7 +125,12 @@ def parse_semantics(
     """
     if not text:
         return EMPTY
-    root = parse_literal_xml(text, field, limits)
+    return semantics_of(parse_literal_xml(text, field, limits), field)
+
+
+def semantics_of(root: Element, field: str = "srdf") -> Semantics:
+    """The groups, end effectors and named states of a parsed SRDF (``root``, read with
+    literal names); errors as :func:`parse_semantics`."""
     groups: list[GroupSpec] = []
     for g in root.findall("group"):
         name = _attr(g, "name", "<group>", field)
@@ -193,7 +199,7 @@ def resolve(
     sem
         The SRDF's semantics (:func:`parse_semantics`).
     joints
-        The URDF's joints (:func:`app.kinematics.models.parse_urdf_joints`): name →
+        The URDF's joints (:func:`app.kinematics.models.urdf_joint_table`): name →
         ``type``, ``parent``, ``child``, ``lower``, ``upper``, ``mimic``.
     strict
         Raise on the first inconsistency (uploads). Models built from the catalog's SRDFs

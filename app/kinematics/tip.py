@@ -27,10 +27,9 @@ linear axis, a one-jaw gripper) is not a finger by this rule: its link is the ti
 from __future__ import annotations
 
 from collections.abc import Iterable
+from xml.etree.ElementTree import Element
 
 import pinocchio as pin
-
-from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 _PRISMATIC = {"JointModelPX", "JointModelPY", "JointModelPZ", "JointModelPrismaticUnaligned"}
 
@@ -61,9 +60,10 @@ def finger_branches(model: pin.Model) -> set[int]:
     return heads
 
 
-def bare_links(urdf_text: str) -> set[str]:
-    """Names of the URDF links with neither ``<visual>`` nor ``<collision>``."""
-    root = parse_literal_xml(urdf_text, "urdf", TRUSTED)
+def bare_links(root: Element) -> set[str]:
+    """Names of the links of a parsed URDF (``root``, read with literal names by
+    :func:`~app.kinematics.xmldoc.parse_literal_xml`) with neither ``<visual>`` nor
+    ``<collision>``."""
     return {
         link.get("name", "")
         for link in root.iter("link")

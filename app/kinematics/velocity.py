@@ -93,9 +93,7 @@ def inverse_velocity(
     if mode not in MODE_ROWS:
         raise InvalidInputError("use pose, position or orientation", "mode")
     rows = np.array(MODE_ROWS[mode])
-    cols = robot.supporting_joints(frame)
-    if joints is not None:
-        cols = cols[np.isin(cols, joints)]
+    cols = robot.supporting_joints(frame, joints)
     J = frame_jacobian(robot, q, frame, reference)
     Jt = J[np.ix_(rows, cols)]
     t = twist[rows]

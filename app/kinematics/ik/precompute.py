@@ -43,9 +43,7 @@ class IKChain:
     def __init__(self, robot: RobotModel, frame: str, joints: np.ndarray | None = None) -> None:
         self.frame = frame
         self.frame_id = robot.frame_id(frame)
-        self.active = robot.supporting_joints(frame)  # wire indices
-        if joints is not None:
-            self.active = self.active[np.isin(self.active, joints)]
+        self.active = robot.supporting_joints(frame, joints)  # wire indices
         joints = [robot.joints[i] for i in self.active]
         self.k = len(joints)
         self.cols = np.array([j.idx_v for j in joints], dtype=int)
@@ -144,16 +142,17 @@ def ik_chain(robot: RobotModel, frame: str, group: Group | None = None) -> IKCha
     robot.frame_id(frame)
     if group is None:
         return robot.lazy(f"ik.chain:{frame}", lambda r: IKChain(r, frame))
-    support = robot.supporting_joints(frame)
-    if not np.isin(support, group.indices).any():
-        raise InvalidInputError(
-            f"no joint of group {group.name!r} ({', '.join(group.joints) or 'none'}) moves "
-            f"frame {frame!r}",
-            "group",
-        )
-    return robot.lazy(
-        f"ik.chain:{frame}|group:{group.name}", lambda r: IKChain(r, frame, group.indices)
-    )
+
+    def build(r: RobotModel) -> IKChain:  # checked once, with the chain (not per request)
+        if r.supporting_joints(frame, group.indices).size == 0:
+            raise InvalidInputError(
+                f"no joint of group {group.name!r} ({', '.join(group.joints) or 'none'}) moves "
+                f"frame {frame!r}",
+                "group",
+            )
+        return IKChain(r, frame, group.indices)
+
+    return robot.lazy(f"ik.chain:{frame}|group:{group.name}", build)
 
 
 def k_smallest(d: np.ndarray, k: int) -> np.ndarray:
