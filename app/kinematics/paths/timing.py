@@ -1,0 +1,441 @@
+"""Time-optimal parameterization of a joint path under joint velocity and acceleration limits.
+
+:func:`parameterize` gives every point of a joint path (wire configurations, one row per
+point) its time, joint velocities and joint accelerations, for the fastest rest-to-rest motion
+along the path that keeps every joint within its limits (TOPP-RA, the ``toppra`` package):
+
+- the geometric path is a cubic spline (not-a-knot) through the points, parameterized by the
+  cumulative joint distance ``s`` (Euclidean norm of the moving joints' steps, rad or m);
+  points within :data:`SAME_POINT` of the previous one are the same point (same time);
+- TOPP-RA finds the largest path speed ``ṡ(s)`` on a grid of :data:`MAX_GRIDPOINTS` points at
+  most (every point of the path is a grid point when there are fewer; each interval is split
+  until there are :data:`MIN_GRIDPOINTS`), with ``ṡ = 0`` at both ends; between grid points
+  the path acceleration ``s̈`` is constant, so ``t(s)``, ``q̇ = q'(s) ṡ`` and
+  ``q̈ = q''(s) ṡ² + q'(s) s̈`` are exact everywhere on the spline;
+- the limits are then **verified on the output**: at every point of the path and at
+  :data:`SAMPLES_PER_INTERVAL` samples of every grid interval (both one-sided accelerations
+  at a grid point). TOPP-RA enforces the limits at grid points only, so between them the
+  spline's curvature can exceed them slightly; when it does, the whole motion is slowed
+  uniformly in time by the smallest factor ``k ≥ 1`` that brings every sample within its
+  limits (``t → k·t``, ``q̇ → q̇/k``, ``q̈ → q̈/k²``): the answer is always within the limits
+  at every verified sample (to rounding), and ``time_scale`` says by how much it was slowed.
+
+Units: seconds, rad/s and m/s, rad/s² and m/s². Accelerations at a point are those just after
+it (at the last point, just before it): ``s̈`` is piecewise constant, so they can jump there.
+
+``toppra`` is imported on first use, without Matplotlib (which toppra imports for its plots
+only): the service never pays Matplotlib's import, and never needs the writable home or
+temporary directory Matplotlib insists on (:func:`toppra_modules`).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import threading
+import types
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.models import RobotModel
+
+#: Most points a path may have for timing (the Cartesian path's own bound).
+MAX_POINTS = 100_000
+#: Most TOPP-RA grid points at first (its cost is linear in them: ~60 µs each on one core).
+GRIDPOINTS = 2000
+#: Most TOPP-RA grid points after refinement.
+MAX_GRIDPOINTS = 4000
+#: Rounds of refinement: grid intervals where a verification sample exceeds a limit by more
+#: than REFINE_TOLERANCE (relative) are split in four and TOPP-RA runs again.
+REFINE_ROUNDS = 4
+REFINE_TOLERANCE = 1e-3
+#: Fewest TOPP-RA grid points: a path of few points has its intervals split evenly.
+MIN_GRIDPOINTS = 500
+#: Interior samples per grid interval where the limits are verified, besides its ends and
+#: the path's points.
+SAMPLES_PER_INTERVAL = 4
+#: Points closer than this (rad or m, joint-space distance) to the previous one are the same
+#: point: they share its time, velocity and acceleration.
+SAME_POINT = 1e-9
+#: Acceleration limit, as a fraction of the velocity limit per second, when a joint has none.
+DEFAULT_ACCELERATION_FRACTION = 1.0
+
+_IMPORT_LOCK = threading.Lock()
+
+
+@dataclass(frozen=True, slots=True)
+class Timing:
+    """A time parameterization of a joint path, at its points.
+
+    Attributes
+    ----------
+    t : (N,) times (s) from the first point (``t[0] = 0``), non-decreasing.
+    qd, qdd : (N, n) joint velocities (rad/s, m/s) and accelerations (rad/s², m/s²), in wire
+        (joint) order; 0 for the joints that do not move along the path.
+    duration : ``t[-1]`` (s).
+    velocity_limits, acceleration_limits : (n,) the limits applied (rad/s or m/s, rad/s² or
+        m/s²); NaN for the joints that do not move (none applied).
+    time_scale : the uniform slow-down applied after verification (1.0: TOPP-RA's motion
+        already held every limit at every sample).
+    """
+
+    t: np.ndarray
+    qd: np.ndarray
+    qdd: np.ndarray
+    duration: float
+    velocity_limits: np.ndarray
+    acceleration_limits: np.ndarray
+    time_scale: float
+
+
+def toppra_modules() -> tuple[Any, Any, Any]:
+    """``(toppra, toppra.algorithm, toppra.constraint)``, imported on first use.
+
+    toppra imports ``matplotlib.pyplot`` at import time for its plotting helpers, which
+    Denavit never calls. Unless Matplotlib is already loaded, the import runs with empty
+    stand-in ``matplotlib`` modules, removed again afterwards: Matplotlib is not imported
+    (0.6 s saved per worker), and its need for a writable configuration or temporary
+    directory (an ``OSError`` at import on a read-only filesystem) never arises.
+    """
+    with _IMPORT_LOCK:
+        if "toppra" not in sys.modules and "matplotlib" not in sys.modules:
+            pyplot = types.ModuleType("matplotlib.pyplot", "stand-in: toppra's plots unused")
+            stubs = {"matplotlib": types.ModuleType("matplotlib"), "matplotlib.pyplot": pyplot}
+            stubs["matplotlib"].pyplot = pyplot  # type: ignore[attr-defined]
+            sys.modules.update(stubs)
+            try:
+                import toppra  # noqa: F401
+            finally:
+                for name, module in stubs.items():
+                    if sys.modules.get(name) is module:
+                        del sys.modules[name]
+        import toppra
+        import toppra.algorithm
+        import toppra.constraint
+
+    return toppra, toppra.algorithm, toppra.constraint
+
+
+# ------------------------------------------------------------------------------ limits
+def _given(
+    robot: RobotModel,
+    values: Sequence[float] | Mapping[str, float] | None,
+    joints: np.ndarray,
+    field: str,
+) -> dict[int, tuple[float, str]]:
+    """Wire index → (value, field) of a per-joint list (over ``joints``) or joint map;
+    every value finite and > 0."""
+    if values is None:
+        return {}
+    if isinstance(values, Mapping):
+        mimic = {m.name: m.leader for m in robot.mimic_joints}
+        items = []
+        for name, value in values.items():
+            path = f"{field}.{name}"
+            if name in mimic:
+                raise InvalidInputError(
+                    f"{name!r} is a mimic follower: it moves with {mimic[name]!r}, give that "
+                    "joint's limit",
+                    path,
+                )
+            items.append((robot.joint_index(name, field=path), value, path))
+    else:
+        if len(values) != len(joints):
+            raise InvalidInputError(
+                f"expected {len(joints)} values (one per joint: "
+                f"{', '.join(robot.joint_names[i] for i in joints)}), got {len(values)}",
+                field,
+            )
+        items = [(int(joints[i]), v, f"{field}.{i}") for i, v in enumerate(values)]
+    out = {}
+    for index, value, path in items:
+        value = float(value)
+        if not (math.isfinite(value) and value > 0.0):
+            raise InvalidInputError(f"must be a finite number > 0 (got {value:g})", path)
+        out[index] = (value, path)
+    return out
+
+
+def description_velocity(robot: RobotModel, index: int) -> float | None:
+    """The velocity limit (rad/s or m/s) the robot's description gives wire joint ``index``,
+    lowered to ``v_f / |m|`` by every mimic follower ``f`` it leads (multiplier ``m``) that has
+    a limit; ``None`` when the joint has no usable one (missing, 0 or infinite)."""
+    limits = [robot.joints[index].velocity]
+    for m in robot.mimic_joints:
+        v_f = robot.urdf_joints.get(m.name, {}).get("velocity")
+        if m.leader_index == index and m.multiplier != 0.0 and v_f:
+            limits.append(v_f / abs(m.multiplier))
+    usable = [v for v in limits if v is not None and math.isfinite(v) and v > 0.0]
+    return min(usable) if usable and limits[0] is not None and limits[0] > 0.0 else None
+
+
+def joint_limits(
+    robot: RobotModel,
+    moving: np.ndarray,
+    *,
+    velocity_limits: Sequence[float] | Mapping[str, float] | None = None,
+    acceleration_limits: Sequence[float] | Mapping[str, float] | None = None,
+    acceleration_fraction: float | None = None,
+    velocity_scale: float = 1.0,
+    joints: Sequence[int] | None = None,
+    field: str = "timing",
+) -> tuple[np.ndarray, np.ndarray]:
+    """The velocity and acceleration limits of the moving joints, (n,) each, NaN elsewhere.
+
+    Velocity: ``velocity_limits`` (a list over ``joints``, default every joint, or a joint
+    map), else the description's (:func:`description_velocity`), times ``velocity_scale``.
+    Acceleration: ``acceleration_limits`` (list or map), else ``acceleration_fraction`` (or
+    :data:`DEFAULT_ACCELERATION_FRACTION`) × the velocity limit before ``velocity_scale``:
+    a fraction ``f`` gives ``a_max = f · v_max / (1 s)``. Errors name
+    ``<field>.velocity_limits.<i or joint>`` and the like.
+    """
+    sel = np.arange(robot.n) if joints is None else np.asarray(joints, dtype=int)
+    if acceleration_limits is not None and acceleration_fraction is not None:
+        raise InvalidInputError(
+            "give either acceleration_limits or acceleration_fraction, not both",
+            f"{field}.acceleration_fraction",
+        )
+    fraction = DEFAULT_ACCELERATION_FRACTION
+    if acceleration_fraction is not None:
+        fraction = float(acceleration_fraction)
+        if not (math.isfinite(fraction) and fraction > 0.0):
+            raise InvalidInputError(
+                f"must be a finite number > 0 (got {fraction:g})", f"{field}.acceleration_fraction"
+            )
+    if not (math.isfinite(velocity_scale) and 0.0 < velocity_scale <= 1.0):
+        raise InvalidInputError(
+            f"must lie in (0, 1] (got {velocity_scale:g})", f"{field}.velocity_scale"
+        )
+    v_given = _given(robot, velocity_limits, sel, f"{field}.velocity_limits")
+    a_given = _given(robot, acceleration_limits, sel, f"{field}.acceleration_limits")
+    v = np.full(robot.n, np.nan)
+    a = np.full(robot.n, np.nan)
+    for i in map(int, moving):
+        v_max = v_given[i][0] if i in v_given else description_velocity(robot, i)
+        if v_max is None:
+            joint = robot.joints[i]
+            raise InvalidInputError(
+                f"joint {joint.name!r} moves along the path but its description has no usable "
+                f"velocity limit (URDF velocity: {joint.velocity}); give one in "
+                f"{field}.velocity_limits",
+                f"{field}.velocity_limits.{joint.name}",
+            )
+        v[i] = v_max * velocity_scale
+        a[i] = a_given[i][0] if i in a_given else fraction * v_max
+    return v, a
+
+
+# ------------------------------------------------------------------------ the motion
+def _check_points(robot: RobotModel, qs: Any, field: str) -> np.ndarray:
+    arr = np.asarray(qs, dtype=float)
+    if arr.ndim != 2 or arr.shape[1] != robot.n or arr.shape[0] < 1:
+        raise InvalidInputError(
+            f"expected (N ≥ 1, {robot.n}) joint values, got shape {arr.shape}", field
+        )
+    if arr.shape[0] > MAX_POINTS:
+        raise InvalidInputError(f"at most {MAX_POINTS} points (got {arr.shape[0]})", field)
+    if not np.isfinite(arr).all():
+        raise InvalidInputError("joint values must be finite", field)
+    return arr
+
+
+def _distinct(walked: np.ndarray) -> np.ndarray:
+    """Indices of the points kept as spline knots: the first, then each point more than
+    :data:`SAME_POINT` of walk (``walked``, non-decreasing) beyond the last kept one."""
+    if (np.diff(walked) > SAME_POINT).all():
+        return np.arange(walked.size)
+    keep = [0]
+    while True:  # one step per kept point
+        nxt = int(np.searchsorted(walked, walked[keep[-1]] + SAME_POINT, side="right"))
+        if nxt >= walked.size:
+            return np.asarray(keep)
+        keep.append(nxt)
+
+
+def _grid(knots: np.ndarray) -> np.ndarray:
+    """TOPP-RA's first grid: the knots, each interval split evenly up to
+    :data:`MIN_GRIDPOINTS` points in all; beyond :data:`GRIDPOINTS` knots, that many points
+    evenly spread."""
+    intervals = knots.size - 1
+    if intervals + 1 > GRIDPOINTS:
+        grid = np.linspace(knots[0], knots[-1], GRIDPOINTS)
+    else:
+        split = max(1, min(-(-(MIN_GRIDPOINTS - 1) // intervals), (GRIDPOINTS - 1) // intervals))
+        steps = np.arange(split) / split
+        grid = (knots[:-1, None] + np.diff(knots)[:, None] * steps).ravel()
+        grid = np.append(grid, knots[-1])
+    return np.unique(grid)  # strictly increasing even where rounding merged two values
+
+
+class _Profile:
+    """The path speed ``ṡ`` TOPP-RA found on ``grid``: piecewise-constant ``s̈``."""
+
+    def __init__(self, grid: np.ndarray, sd: np.ndarray) -> None:
+        self.grid = grid
+        self.sd = np.maximum(sd, 0.0)
+        ds = np.diff(grid)
+        self.sdd = (self.sd[1:] ** 2 - self.sd[:-1] ** 2) / (2.0 * ds)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dt = 2.0 * ds / (self.sd[:-1] + self.sd[1:])
+        if not np.isfinite(dt).all():
+            raise InvalidInputError(
+                "the path could not be time-parameterized (zero path speed inside the path)",
+                "timing",
+            )
+        self.t = np.concatenate([[0.0], np.cumsum(dt)])
+
+    def at(self, k: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(t, ṡ, s̈) at path parameters ``s`` in grid intervals ``k``."""
+        delta = s - self.grid[k]
+        sd = np.sqrt(np.maximum(self.sd[k] ** 2 + 2.0 * self.sdd[k] * delta, 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dt = np.where(delta > 0.0, 2.0 * delta / (self.sd[k] + sd), 0.0)
+        return self.t[k] + dt, sd, self.sdd[k]
+
+    def interval(self, s: np.ndarray) -> np.ndarray:
+        """The grid interval each ``s`` lies in (one starting at ``s`` if it is a grid point;
+        the last one for the path's end)."""
+        k = np.searchsorted(self.grid, s, side="right") - 1
+        return np.clip(k, 0, self.grid.size - 2)
+
+
+def _motion(path: Any, profile: _Profile, k: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, ...]:
+    """(t, q̇, q̈) of the moving joints at ``s`` (intervals ``k``)."""
+    t, sd, sdd = profile.at(k, s)
+    dq = path(s, 1).reshape(s.size, -1)
+    ddq = path(s, 2).reshape(s.size, -1)
+    return t, dq * sd[:, None], ddq * (sd**2)[:, None] + dq * sdd[:, None]
+
+
+def _solve(path: Any, grid: np.ndarray, v: np.ndarray, a: np.ndarray, field: str) -> _Profile:
+    """TOPP-RA on ``grid`` (seidel solver: deterministic), at rest at both ends."""
+    _, algo, constraint = toppra_modules()
+    instance = algo.TOPPRA(
+        [constraint.JointVelocityConstraint(v), constraint.JointAccelerationConstraint(a)],
+        path,
+        gridpoints=grid,
+        solver_wrapper="seidel",
+    )
+    _, sd, _ = instance.compute_parameterization(0.0, 0.0)
+    if sd is None or not np.isfinite(sd).all():
+        raise InvalidInputError(
+            f"the path could not be time-parameterized ({instance.problem_data.return_code})",
+            field,
+        )
+    return _Profile(grid, np.asarray(sd, dtype=float))
+
+
+def _samples(grid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(interval, s) of the verification samples: both ends of every grid interval and
+    :data:`SAMPLES_PER_INTERVAL` evenly inside."""
+    frac = np.linspace(0.0, 1.0, SAMPLES_PER_INTERVAL + 2)
+    k = np.repeat(np.arange(grid.size - 1), frac.size)
+    s = grid[k] + np.tile(frac, grid.size - 1) * np.diff(grid)[k]
+    return k, np.minimum(s, grid[k + 1])
+
+
+def _needed(qd: np.ndarray, qdd: np.ndarray, v: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """Per sample, the time scale that brings every joint within its limits (≤ 1: none)."""
+    return np.maximum((np.abs(qd) / v).max(axis=1), np.sqrt((np.abs(qdd) / a).max(axis=1)))
+
+
+def parameterize(
+    robot: RobotModel,
+    qs: np.ndarray,
+    *,
+    velocity_limits: Sequence[float] | Mapping[str, float] | None = None,
+    acceleration_limits: Sequence[float] | Mapping[str, float] | None = None,
+    acceleration_fraction: float | None = None,
+    velocity_scale: float = 1.0,
+    joints: Sequence[int] | None = None,
+    field: str = "timing",
+    points_field: str = "points",
+) -> Timing:
+    """The time-optimal rest-to-rest timing of the joint path ``qs`` (see the module).
+
+    Parameters
+    ----------
+    robot
+        The robot; its description gives the default velocity limits.
+    qs
+        (N, n) wire configurations (rad or m), the path's points in order; at most
+        :data:`MAX_POINTS`. Fewer than two distinct points: every ``t`` is 0, duration 0.
+    velocity_limits, acceleration_limits
+        Per joint (rad/s or m/s; rad/s² or m/s²): a list over ``joints`` (default: every
+        joint, wire order) or a joint name → value map; joints not given take the defaults
+        of :func:`joint_limits`. Every value finite and > 0.
+    acceleration_fraction
+        Instead of ``acceleration_limits``: ``a_max = fraction · v_max / (1 s)`` per joint
+        (default :data:`DEFAULT_ACCELERATION_FRACTION`).
+    velocity_scale
+        In (0, 1]: every velocity limit is multiplied by it.
+    joints
+        Wire indices the limit lists refer to (e.g. a planning group's), in their order.
+    field, points_field
+        Wire names of the timing options and of the points, for errors
+        (``timing.velocity_limits.<joint>``).
+
+    Raises
+    ------
+    InvalidInputError
+        A joint that moves has no usable velocity limit; a limit not finite and > 0; both
+        acceleration forms given; points malformed.
+    """
+    arr = _check_points(robot, qs, points_field)
+    n_pts = arr.shape[0]
+    moving = np.flatnonzero(np.ptp(arr, axis=0) > 0.0)
+    v, a = joint_limits(
+        robot,
+        moving,
+        velocity_limits=velocity_limits,
+        acceleration_limits=acceleration_limits,
+        acceleration_fraction=acceleration_fraction,
+        velocity_scale=velocity_scale,
+        joints=joints,
+        field=field,
+    )
+    zeros = np.zeros((n_pts, robot.n))
+    # Each point's path parameter: the joint distance walked (Euclidean norm of the moving
+    # joints' steps); points within SAME_POINT of walk from the last kept one merge into it.
+    sub = arr[:, moving]
+    walked = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(sub, axis=0), axis=1))])
+    keep = _distinct(walked)
+    if keep.size < 2:
+        return Timing(np.zeros(n_pts), zeros, zeros.copy(), 0.0, v, a, 1.0)
+    knots = walked[keep]
+    s_pts = knots[np.searchsorted(keep, np.arange(n_pts), side="right") - 1]
+
+    ta, _, _ = toppra_modules()
+    path = ta.SplineInterpolator(knots, sub[keep])
+    v_m, a_m = v[moving], a[moving]
+    grid = _grid(knots)
+    for round_ in range(REFINE_ROUNDS + 1):
+        profile = _solve(path, grid, v_m, a_m, field)
+        # The slow-down each grid interval needs: at its ends (one-sided accelerations), at
+        # SAMPLES_PER_INTERVAL samples inside, and at the path's points in it.
+        need = np.zeros(grid.size - 1)
+        k_dense, s_dense = _samples(grid)
+        k_pts = profile.interval(s_pts)
+        for k, s in ((k_dense, s_dense), (k_pts, s_pts)):
+            _, qd_s, qdd_s = _motion(path, profile, k, s)
+            np.maximum.at(need, k, _needed(qd_s, qdd_s, v_m, a_m))
+        bad = np.flatnonzero(need > 1.0 + REFINE_TOLERANCE)
+        room = (MAX_GRIDPOINTS - grid.size) // 3
+        if bad.size == 0 or round_ == REFINE_ROUNDS or room <= 0:
+            break
+        bad = bad[np.argsort(-need[bad], kind="stable")][:room]  # the worst first
+        quarters = grid[bad, None] + np.diff(grid)[bad, None] * np.array([0.25, 0.5, 0.75])
+        grid = np.unique(np.concatenate([grid, quarters.ravel()]))
+
+    scale = max(1.0, float(need.max()))
+    t_pts, qd_m, qdd_m = _motion(path, profile, k_pts, s_pts)
+    qd = zeros
+    qdd = zeros.copy()
+    qd[:, moving] = qd_m / scale
+    qdd[:, moving] = qdd_m / scale**2
+    t = t_pts * scale
+    return Timing(t, qd, qdd, float(t[-1]), v, a, scale)
