@@ -7,18 +7,25 @@ along the path that keeps every joint within its limits (TOPP-RA, the ``toppra``
 - the geometric path is a cubic spline (not-a-knot) through the points, parameterized by the
   cumulative joint distance ``s`` (Euclidean norm of the moving joints' steps, rad or m);
   points within :data:`SAME_POINT` of the previous one are the same point (same time);
-- TOPP-RA finds the largest path speed ``ṡ(s)`` on a grid of :data:`MAX_GRIDPOINTS` points at
-  most (every point of the path is a grid point when there are fewer; each interval is split
-  until there are :data:`MIN_GRIDPOINTS`), with ``ṡ = 0`` at both ends; between grid points
-  the path acceleration ``s̈`` is constant, so ``t(s)``, ``q̇ = q'(s) ṡ`` and
-  ``q̈ = q''(s) ṡ² + q'(s) s̈`` are exact everywhere on the spline;
+- TOPP-RA finds the largest path speed ``ṡ(s)`` on a grid (every point of the path is a grid
+  point when there are at most :data:`GRIDPOINTS`, each interval split evenly until there
+  are :data:`MIN_GRIDPOINTS`; else :data:`GRIDPOINTS` even points), with ``ṡ = 0`` at both
+  ends; between grid points the path acceleration ``s̈`` is constant, so ``t(s)``,
+  ``q̇ = q'(s) ṡ`` and ``q̈ = q''(s) ṡ² + q'(s) s̈`` are exact everywhere on the spline;
 - the limits are then **verified on the output**: at every point of the path and at
-  :data:`SAMPLES_PER_INTERVAL` samples of every grid interval (both one-sided accelerations
-  at a grid point). TOPP-RA enforces the limits at grid points only, so between them the
-  spline's curvature can exceed them slightly; when it does, the whole motion is slowed
-  uniformly in time by the smallest factor ``k ≥ 1`` that brings every sample within its
-  limits (``t → k·t``, ``q̇ → q̇/k``, ``q̈ → q̈/k²``): the answer is always within the limits
-  at every verified sample (to rounding), and ``time_scale`` says by how much it was slowed.
+  :data:`SAMPLES_PER_INTERVAL` samples inside every grid interval and at its ends (both
+  one-sided accelerations). TOPP-RA enforces the limits at grid points only, so between them
+  the spline's curvature can exceed them (e.g. near a sharp corner of the joint path): the
+  grid intervals exceeding a limit by more than :data:`REFINE_TOLERANCE` are split in four
+  and TOPP-RA runs again (:data:`REFINE_ROUNDS` times at most, :data:`MAX_GRIDPOINTS` grid
+  points at most); what excess remains is removed by slowing the whole motion uniformly in
+  time by the smallest factor ``k ≥ 1`` that brings every sample within its limits
+  (``t → k·t``, ``q̇ → q̇/k``, ``q̈ → q̈/k²``). The answer is always within the limits at every
+  verified sample (to rounding); ``time_scale`` says by how much it was slowed.
+
+Joints that move less than :data:`SAME_POINT` along the whole path are static: velocity and
+acceleration 0, no limit needed. Joint paths are taken as given: a continuous joint's
+wire value is one angle, so a wrap from π to −π between two points is a 2π move.
 
 Units: seconds, rad/s and m/s, rad/s² and m/s². Accelerations at a point are those just after
 it (at the last point, just before it): ``s̈`` is piecewise constant, so they can jump there.
@@ -30,7 +37,6 @@ temporary directory Matplotlib insists on (:func:`toppra_modules`).
 
 from __future__ import annotations
 
-import math
 import sys
 import threading
 import types
@@ -42,6 +48,7 @@ import numpy as np
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
+from app.kinematics.paths.limits import joint_limits
 
 #: Most points a path may have for timing (the Cartesian path's own bound).
 MAX_POINTS = 100_000
@@ -61,8 +68,6 @@ SAMPLES_PER_INTERVAL = 4
 #: Points closer than this (rad or m, joint-space distance) to the previous one are the same
 #: point: they share its time, velocity and acceleration.
 SAME_POINT = 1e-9
-#: Acceleration limit, as a fraction of the velocity limit per second, when a joint has none.
-DEFAULT_ACCELERATION_FRACTION = 1.0
 
 _IMPORT_LOCK = threading.Lock()
 
@@ -120,115 +125,6 @@ def toppra_modules() -> tuple[Any, Any, Any]:
     return toppra, toppra.algorithm, toppra.constraint
 
 
-# ------------------------------------------------------------------------------ limits
-def _given(
-    robot: RobotModel,
-    values: Sequence[float] | Mapping[str, float] | None,
-    joints: np.ndarray,
-    field: str,
-) -> dict[int, tuple[float, str]]:
-    """Wire index → (value, field) of a per-joint list (over ``joints``) or joint map;
-    every value finite and > 0."""
-    if values is None:
-        return {}
-    if isinstance(values, Mapping):
-        mimic = {m.name: m.leader for m in robot.mimic_joints}
-        items = []
-        for name, value in values.items():
-            path = f"{field}.{name}"
-            if name in mimic:
-                raise InvalidInputError(
-                    f"{name!r} is a mimic follower: it moves with {mimic[name]!r}, give that "
-                    "joint's limit",
-                    path,
-                )
-            items.append((robot.joint_index(name, field=path), value, path))
-    else:
-        if len(values) != len(joints):
-            raise InvalidInputError(
-                f"expected {len(joints)} values (one per joint: "
-                f"{', '.join(robot.joint_names[i] for i in joints)}), got {len(values)}",
-                field,
-            )
-        items = [(int(joints[i]), v, f"{field}.{i}") for i, v in enumerate(values)]
-    out = {}
-    for index, value, path in items:
-        value = float(value)
-        if not (math.isfinite(value) and value > 0.0):
-            raise InvalidInputError(f"must be a finite number > 0 (got {value:g})", path)
-        out[index] = (value, path)
-    return out
-
-
-def description_velocity(robot: RobotModel, index: int) -> float | None:
-    """The velocity limit (rad/s or m/s) the robot's description gives wire joint ``index``,
-    lowered to ``v_f / |m|`` by every mimic follower ``f`` it leads (multiplier ``m``) that has
-    a limit; ``None`` when the joint has no usable one (missing, 0 or infinite)."""
-    limits = [robot.joints[index].velocity]
-    for m in robot.mimic_joints:
-        v_f = robot.urdf_joints.get(m.name, {}).get("velocity")
-        if m.leader_index == index and m.multiplier != 0.0 and v_f:
-            limits.append(v_f / abs(m.multiplier))
-    usable = [v for v in limits if v is not None and math.isfinite(v) and v > 0.0]
-    return min(usable) if usable and limits[0] is not None and limits[0] > 0.0 else None
-
-
-def joint_limits(
-    robot: RobotModel,
-    moving: np.ndarray,
-    *,
-    velocity_limits: Sequence[float] | Mapping[str, float] | None = None,
-    acceleration_limits: Sequence[float] | Mapping[str, float] | None = None,
-    acceleration_fraction: float | None = None,
-    velocity_scale: float = 1.0,
-    joints: Sequence[int] | None = None,
-    field: str = "timing",
-) -> tuple[np.ndarray, np.ndarray]:
-    """The velocity and acceleration limits of the moving joints, (n,) each, NaN elsewhere.
-
-    Velocity: ``velocity_limits`` (a list over ``joints``, default every joint, or a joint
-    map), else the description's (:func:`description_velocity`), times ``velocity_scale``.
-    Acceleration: ``acceleration_limits`` (list or map), else ``acceleration_fraction`` (or
-    :data:`DEFAULT_ACCELERATION_FRACTION`) × the velocity limit before ``velocity_scale``:
-    a fraction ``f`` gives ``a_max = f · v_max / (1 s)``. Errors name
-    ``<field>.velocity_limits.<i or joint>`` and the like.
-    """
-    sel = np.arange(robot.n) if joints is None else np.asarray(joints, dtype=int)
-    if acceleration_limits is not None and acceleration_fraction is not None:
-        raise InvalidInputError(
-            "give either acceleration_limits or acceleration_fraction, not both",
-            f"{field}.acceleration_fraction",
-        )
-    fraction = DEFAULT_ACCELERATION_FRACTION
-    if acceleration_fraction is not None:
-        fraction = float(acceleration_fraction)
-        if not (math.isfinite(fraction) and fraction > 0.0):
-            raise InvalidInputError(
-                f"must be a finite number > 0 (got {fraction:g})", f"{field}.acceleration_fraction"
-            )
-    if not (math.isfinite(velocity_scale) and 0.0 < velocity_scale <= 1.0):
-        raise InvalidInputError(
-            f"must lie in (0, 1] (got {velocity_scale:g})", f"{field}.velocity_scale"
-        )
-    v_given = _given(robot, velocity_limits, sel, f"{field}.velocity_limits")
-    a_given = _given(robot, acceleration_limits, sel, f"{field}.acceleration_limits")
-    v = np.full(robot.n, np.nan)
-    a = np.full(robot.n, np.nan)
-    for i in map(int, moving):
-        v_max = v_given[i][0] if i in v_given else description_velocity(robot, i)
-        if v_max is None:
-            joint = robot.joints[i]
-            raise InvalidInputError(
-                f"joint {joint.name!r} moves along the path but its description has no usable "
-                f"velocity limit (URDF velocity: {joint.velocity}); give one in "
-                f"{field}.velocity_limits",
-                f"{field}.velocity_limits.{joint.name}",
-            )
-        v[i] = v_max * velocity_scale
-        a[i] = a_given[i][0] if i in a_given else fraction * v_max
-    return v, a
-
-
 # ------------------------------------------------------------------------ the motion
 def _check_points(robot: RobotModel, qs: Any, field: str) -> np.ndarray:
     arr = np.asarray(qs, dtype=float)
@@ -274,7 +170,7 @@ def _grid(knots: np.ndarray) -> np.ndarray:
 class _Profile:
     """The path speed ``ṡ`` TOPP-RA found on ``grid``: piecewise-constant ``s̈``."""
 
-    def __init__(self, grid: np.ndarray, sd: np.ndarray) -> None:
+    def __init__(self, grid: np.ndarray, sd: np.ndarray, field: str) -> None:
         self.grid = grid
         self.sd = np.maximum(sd, 0.0)
         ds = np.diff(grid)
@@ -284,7 +180,7 @@ class _Profile:
         if not np.isfinite(dt).all():
             raise InvalidInputError(
                 "the path could not be time-parameterized (zero path speed inside the path)",
-                "timing",
+                field,
             )
         self.t = np.concatenate([[0.0], np.cumsum(dt)])
 
@@ -326,7 +222,7 @@ def _solve(path: Any, grid: np.ndarray, v: np.ndarray, a: np.ndarray, field: str
             f"the path could not be time-parameterized ({instance.problem_data.return_code})",
             field,
         )
-    return _Profile(grid, np.asarray(sd, dtype=float))
+    return _Profile(grid, np.asarray(sd, dtype=float), field)
 
 
 def _samples(grid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -367,10 +263,10 @@ def parameterize(
     velocity_limits, acceleration_limits
         Per joint (rad/s or m/s; rad/s² or m/s²): a list over ``joints`` (default: every
         joint, wire order) or a joint name → value map; joints not given take the defaults
-        of :func:`joint_limits`. Every value finite and > 0.
+        of :func:`~app.kinematics.paths.limits.joint_limits`. Every value finite and > 0.
     acceleration_fraction
         Instead of ``acceleration_limits``: ``a_max = fraction · v_max / (1 s)`` per joint
-        (default :data:`DEFAULT_ACCELERATION_FRACTION`).
+        (default :data:`~app.kinematics.paths.limits.DEFAULT_ACCELERATION_FRACTION`).
     velocity_scale
         In (0, 1]: every velocity limit is multiplied by it.
     joints
@@ -387,7 +283,7 @@ def parameterize(
     """
     arr = _check_points(robot, qs, points_field)
     n_pts = arr.shape[0]
-    moving = np.flatnonzero(np.ptp(arr, axis=0) > 0.0)
+    moving = np.flatnonzero(np.ptp(arr, axis=0) > SAME_POINT)
     v, a = joint_limits(
         robot,
         moving,
