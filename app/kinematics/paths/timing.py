@@ -173,6 +173,7 @@ class _Profile:
     def __init__(self, grid: np.ndarray, sd: np.ndarray, field: str) -> None:
         self.grid = grid
         self.sd = np.maximum(sd, 0.0)
+        self.sd[[0, -1]] = 0.0  # at rest at both ends (TOPP-RA's ends are ~1e-9 off)
         ds = np.diff(grid)
         self.sdd = (self.sd[1:] ** 2 - self.sd[:-1] ** 2) / (2.0 * ds)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -187,7 +188,9 @@ class _Profile:
     def at(self, k: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(t, ṡ, s̈) at path parameters ``s`` in grid intervals ``k``."""
         delta = s - self.grid[k]
-        sd = np.sqrt(np.maximum(self.sd[k] ** 2 + 2.0 * self.sdd[k] * delta, 0.0))
+        # ṡ² is linear in s within an interval: interpolated so that it is exact at both ends
+        f = delta / (self.grid[k + 1] - self.grid[k])
+        sd = np.sqrt(np.maximum((1.0 - f) * self.sd[k] ** 2 + f * self.sd[k + 1] ** 2, 0.0))
         with np.errstate(divide="ignore", invalid="ignore"):
             dt = np.where(delta > 0.0, 2.0 * delta / (self.sd[k] + sd), 0.0)
         return self.t[k] + dt, sd, self.sdd[k]
