@@ -127,6 +127,31 @@ def test_duration_matches_toppras_own_trajectory(registry) -> None:
     assert abs(result.duration - reference.duration) < 0.01 * reference.duration
 
 
+@pytest.mark.parametrize(
+    ("v", "a", "length", "n_points"),
+    [
+        (1.0, 1.0, 3e-8, 3),
+        (1.0, 1e-3, 1e-6, 50),
+        (1e-9, 1e-9, 1.0, 7),
+        (1e12, 1e-9, 1e-6, 7),
+        (1e-3, 1e12, 1e4, 50),
+        (1e6, 1e6, 2e-9, 2),
+    ],
+)
+def test_limits_hold_at_any_scale_of_path_and_limits(v, a, length, n_points) -> None:
+    """TOPP-RA's tolerances are absolute: tiny or huge paths and limits must still give a
+    motion within the limits (they were refused as 'not controllable' before scaling)."""
+    robot = robot_of(planar_2link(limit=1e4))
+    rng = np.random.default_rng(n_points)
+    qs = np.cumsum(rng.normal(size=(n_points, 2)), axis=0)
+    qs = (qs - qs[0]) * length / np.linalg.norm(np.diff(qs, axis=0), axis=1).sum()
+    result = parameterize(robot, qs, velocity_limits=[v, 3 * v], acceleration_limits=[a, 2 * a])
+    check_limits(qs, result)
+    v_max, a_max = np.array([v, 3 * v]), np.array([a, 2 * a])
+    peak = max(np.abs(result.qd / v_max).max(), np.abs(result.qdd / a_max).max())
+    assert peak >= 0.98
+
+
 # ------------------------------------------------------------------------ closed forms
 def bang_bang_time(q: np.ndarray, distance: float, v: float, a: float) -> np.ndarray:
     """Time at which a rest-to-rest trapezoidal (or triangular) profile reaches q ∈ [0, D]."""

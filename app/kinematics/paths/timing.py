@@ -308,12 +308,20 @@ def parameterize(
     knots = walked[keep]
     s_pts = knots[np.searchsorted(keep, np.arange(n_pts), side="right") - 1]
 
-    ta, _, _ = toppra_modules()
-    path = ta.SplineInterpolator(knots, sub[keep])
+    # TOPP-RA's tolerances are absolute: it runs on a unit-length path (s/L, (q − q₀)/L) in
+    # time units of T₀, a lower bound of the duration (each joint's bang-bang time over its
+    # total travel), so that its numbers are of order 1 whatever the path's length and limits.
+    length = float(knots[-1])
     v_m, a_m = v[moving], a[moving]
-    grid = _grid(knots)
+    travel = np.abs(np.diff(sub, axis=0)).sum(axis=0)
+    t0 = float(np.max(np.maximum(travel / v_m, np.sqrt(travel / a_m))))
+    v_n, a_n = v_m * t0 / length, a_m * t0**2 / length
+    ta, _, _ = toppra_modules()
+    path = ta.SplineInterpolator(knots / length, (sub[keep] - sub[0]) / length)
+    s_pts = s_pts / length
+    grid = _grid(knots / length)
     for round_ in range(REFINE_ROUNDS + 1):
-        profile = _solve(path, grid, v_m, a_m, field)
+        profile = _solve(path, grid, v_n, a_n, field)
         # The slow-down each grid interval needs: at its ends (one-sided accelerations), at
         # SAMPLES_PER_INTERVAL samples inside, and at the path's points in it.
         need = np.zeros(grid.size - 1)
@@ -321,7 +329,7 @@ def parameterize(
         k_pts = profile.interval(s_pts)
         for k, s in ((k_dense, s_dense), (k_pts, s_pts)):
             _, qd_s, qdd_s = _motion(path, profile, k, s)
-            np.maximum.at(need, k, _needed(qd_s, qdd_s, v_m, a_m))
+            np.maximum.at(need, k, _needed(qd_s, qdd_s, v_n, a_n))
         bad = np.flatnonzero(need > 1.0 + REFINE_TOLERANCE)
         room = (MAX_GRIDPOINTS - grid.size) // 3
         if bad.size == 0 or round_ == REFINE_ROUNDS or room <= 0:
@@ -332,9 +340,10 @@ def parameterize(
 
     scale = max(1.0, float(need.max()))
     t_pts, qd_m, qdd_m = _motion(path, profile, k_pts, s_pts)
+    time = t0 * scale  # back to seconds, slowed down
     qd = zeros
     qdd = zeros.copy()
-    qd[:, moving] = qd_m / scale
-    qdd[:, moving] = qdd_m / scale**2
-    t = t_pts * scale
+    qd[:, moving] = qd_m * (length / time)
+    qdd[:, moving] = qdd_m * (length / time**2)
+    t = t_pts * time
     return Timing(t, qd, qdd, float(t[-1]), v, a, scale)
