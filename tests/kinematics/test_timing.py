@@ -109,6 +109,16 @@ def test_a_sharp_corner_is_refined_not_slowed_globally(registry) -> None:
     assert abs(result.duration - few.duration) < 0.02 * few.duration
 
 
+def test_a_random_walk_of_thousands_of_corners_stays_near_optimal(registry) -> None:
+    """Every point a corner: the grid holds every point, refinement the rest; the uniform
+    slow-down left is small, and the limits hold."""
+    robot = registry.get("ur5")
+    qs = np.cumsum(np.random.default_rng(7).normal(size=(2500, 6)) * 0.01, axis=0)
+    result = parameterize(robot, qs, acceleration_fraction=1.0)
+    check_limits(qs, result)
+    assert result.time_scale < 1.01
+
+
 def test_duration_matches_toppras_own_trajectory(registry) -> None:
     """toppra's standard pipeline (its automatic grid and output trajectory) on the same
     path: the same optimum within 1 %."""

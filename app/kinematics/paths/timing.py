@@ -6,7 +6,8 @@ along the path that keeps every joint within its limits (TOPP-RA, the ``toppra``
 
 - the geometric path is a cubic spline (not-a-knot) through the points, parameterized by the
   cumulative joint distance ``s`` (Euclidean norm of the moving joints' steps, rad or m);
-  points within :data:`SAME_POINT` of the previous one are the same point (same time);
+  points within :data:`SAME_POINT` of walk from the previous one are the same point (same
+  time);
 - TOPP-RA finds the largest path speed ``ṡ(s)`` on a grid (every point of the path is a grid
   point when there are at most :data:`GRIDPOINTS`, each interval split evenly until there
   are :data:`MIN_GRIDPOINTS`; else :data:`GRIDPOINTS` even points), with ``ṡ = 0`` at both
@@ -16,12 +17,17 @@ along the path that keeps every joint within its limits (TOPP-RA, the ``toppra``
   :data:`SAMPLES_PER_INTERVAL` samples inside every grid interval and at its ends (both
   one-sided accelerations). TOPP-RA enforces the limits at grid points only, so between them
   the spline's curvature can exceed them (e.g. near a sharp corner of the joint path): the
-  grid intervals exceeding a limit by more than :data:`REFINE_TOLERANCE` are split in four
-  and TOPP-RA runs again (:data:`REFINE_ROUNDS` times at most, :data:`MAX_GRIDPOINTS` grid
-  points at most); what excess remains is removed by slowing the whole motion uniformly in
-  time by the smallest factor ``k ≥ 1`` that brings every sample within its limits
-  (``t → k·t``, ``q̇ → q̇/k``, ``q̈ → q̈/k²``). The answer is always within the limits at every
-  verified sample (to rounding); ``time_scale`` says by how much it was slowed.
+  grid intervals exceeding a limit by more than :data:`REFINE_TOLERANCE` are split (at the
+  path's points inside them, else in four) and TOPP-RA runs again (:data:`REFINE_ROUNDS`
+  times, :data:`MAX_GRIDPOINTS` grid points at most); what excess remains is removed by
+  slowing the whole motion uniformly in time by the smallest factor ``k ≥ 1`` that brings
+  every sample within its limits (``t → k·t``, ``q̇ → q̇/k``, ``q̈ → q̈/k²``). The answer is
+  always within the limits at every verified sample (to rounding); ``time_scale`` says by
+  how much it was slowed (1.0 to 1.005 on smooth paths and random walks alike).
+
+TOPP-RA's tolerances are absolute, so it runs on a unit-length path in units of a duration
+bound: paths of nanometres or kilometres, limits from 1e-9 to 1e12, all give well-scaled
+numbers.
 
 Joints that move less than :data:`SAME_POINT` along the whole path are static: velocity and
 acceleration 0, no limit needed. Joint paths are taken as given: a continuous joint's
@@ -53,11 +59,11 @@ from app.kinematics.paths.limits import joint_limits
 #: Most points a path may have for timing (the Cartesian path's own bound).
 MAX_POINTS = 100_000
 #: Most TOPP-RA grid points at first (its cost is linear in them: ~60 µs each on one core).
-GRIDPOINTS = 2000
+GRIDPOINTS = 4000
 #: Most TOPP-RA grid points after refinement.
-MAX_GRIDPOINTS = 4000
+MAX_GRIDPOINTS = 6000
 #: Rounds of refinement: grid intervals where a verification sample exceeds a limit by more
-#: than REFINE_TOLERANCE (relative) are split in four and TOPP-RA runs again.
+#: than REFINE_TOLERANCE (relative) are split (:func:`_refined`) and TOPP-RA runs again.
 REFINE_ROUNDS = 4
 REFINE_TOLERANCE = 1e-3
 #: Fewest TOPP-RA grid points: a path of few points has its intervals split evenly.
@@ -65,8 +71,9 @@ MIN_GRIDPOINTS = 500
 #: Interior samples per grid interval where the limits are verified, besides its ends and
 #: the path's points.
 SAMPLES_PER_INTERVAL = 4
-#: Points closer than this (rad or m, joint-space distance) to the previous one are the same
-#: point: they share its time, velocity and acceleration.
+#: Points within this joint-space walk (rad or m) of the previous distinct one are the same
+#: point: they share its time, velocity and acceleration. Joints whose values span less
+#: along the whole path do not move.
 SAME_POINT = 1e-9
 
 _IMPORT_LOCK = threading.Lock()
@@ -242,6 +249,21 @@ def _needed(qd: np.ndarray, qdd: np.ndarray, v: np.ndarray, a: np.ndarray) -> np
     return np.maximum((np.abs(qd) / v).max(axis=1), np.sqrt((np.abs(qdd) / a).max(axis=1)))
 
 
+def _refined(grid: np.ndarray, bad: np.ndarray, knots: np.ndarray) -> np.ndarray:
+    """``grid`` with the intervals ``bad`` (worst first) split: at the path's knots inside
+    them (where the spline's curvature jumps), or in four when they hold none; as many as
+    :data:`MAX_GRIDPOINTS` allows."""
+    where = np.searchsorted(grid, knots, side="right") - 1
+    inner = ~np.isin(knots, grid)
+    counts = np.bincount(where[inner], minlength=grid.size)[bad]
+    added = np.cumsum(np.where(counts > 0, counts, 3))
+    bad = bad[added <= MAX_GRIDPOINTS - grid.size]
+    split = bad[counts[: bad.size] == 0]
+    quarters = grid[split, None] + np.diff(grid)[split, None] * np.array([0.25, 0.5, 0.75])
+    inside = knots[inner & np.isin(where, bad)]
+    return np.unique(np.concatenate([grid, inside, quarters.ravel()]))
+
+
 def parameterize(
     robot: RobotModel,
     qs: np.ndarray,
@@ -316,10 +338,11 @@ def parameterize(
     travel = np.abs(np.diff(sub, axis=0)).sum(axis=0)
     t0 = float(np.max(np.maximum(travel / v_m, np.sqrt(travel / a_m))))
     v_n, a_n = v_m * t0 / length, a_m * t0**2 / length
+    unit_knots = knots / length
     ta, _, _ = toppra_modules()
-    path = ta.SplineInterpolator(knots / length, (sub[keep] - sub[0]) / length)
+    path = ta.SplineInterpolator(unit_knots, (sub[keep] - sub[0]) / length)
     s_pts = s_pts / length
-    grid = _grid(knots / length)
+    grid = _grid(unit_knots)
     for round_ in range(REFINE_ROUNDS + 1):
         profile = _solve(path, grid, v_n, a_n, field)
         # The slow-down each grid interval needs: at its ends (one-sided accelerations), at
@@ -331,12 +354,12 @@ def parameterize(
             _, qd_s, qdd_s = _motion(path, profile, k, s)
             np.maximum.at(need, k, _needed(qd_s, qdd_s, v_n, a_n))
         bad = np.flatnonzero(need > 1.0 + REFINE_TOLERANCE)
-        room = (MAX_GRIDPOINTS - grid.size) // 3
-        if bad.size == 0 or round_ == REFINE_ROUNDS or room <= 0:
+        if bad.size == 0 or round_ == REFINE_ROUNDS:
             break
-        bad = bad[np.argsort(-need[bad], kind="stable")][:room]  # the worst first
-        quarters = grid[bad, None] + np.diff(grid)[bad, None] * np.array([0.25, 0.5, 0.75])
-        grid = np.unique(np.concatenate([grid, quarters.ravel()]))
+        refined = _refined(grid, bad[np.argsort(-need[bad], kind="stable")], unit_knots)
+        if refined.size == grid.size:
+            break  # no room left
+        grid = refined
 
     scale = max(1.0, float(need.max()))
     t_pts, qd_m, qdd_m = _motion(path, profile, k_pts, s_pts)
