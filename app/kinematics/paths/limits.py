@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
+from typing import TypedDict, Unpack
 
 import numpy as np
 
@@ -79,16 +80,19 @@ def description_velocity(robot: RobotModel, index: int) -> float | None:
     return min(usable) if usable and limits[0] is not None and limits[0] > 0.0 else None
 
 
+class LimitOptions(TypedDict, total=False):
+    """The limit options of a timed path (keywords of :func:`joint_limits` and of
+    :func:`app.kinematics.paths.timing.parameterize`)."""
+
+    velocity_limits: Sequence[float] | Mapping[str, float] | None
+    acceleration_limits: Sequence[float] | Mapping[str, float] | None
+    acceleration_fraction: float | None
+    velocity_scale: float
+    joints: Sequence[int] | None
+
+
 def joint_limits(
-    robot: RobotModel,
-    moving: np.ndarray,
-    *,
-    velocity_limits: Sequence[float] | Mapping[str, float] | None = None,
-    acceleration_limits: Sequence[float] | Mapping[str, float] | None = None,
-    acceleration_fraction: float | None = None,
-    velocity_scale: float = 1.0,
-    joints: Sequence[int] | None = None,
-    field: str = "timing",
+    robot: RobotModel, moving: np.ndarray, *, field: str = "timing", **options: Unpack[LimitOptions]
 ) -> tuple[np.ndarray, np.ndarray]:
     """The velocity and acceleration limits of the moving joints, (n,) each, NaN elsewhere.
 
@@ -99,6 +103,14 @@ def joint_limits(
     a fraction ``f`` gives ``a_max = f · v_max / (1 s)``. Errors name
     ``<field>.velocity_limits.<i or joint>`` and the like.
     """
+    unknown = set(options) - set(LimitOptions.__annotations__)
+    if unknown:
+        raise TypeError(f"unknown limit options: {', '.join(sorted(unknown))}")
+    joints = options.get("joints")
+    velocity_limits = options.get("velocity_limits")
+    acceleration_limits = options.get("acceleration_limits")
+    acceleration_fraction = options.get("acceleration_fraction")
+    velocity_scale = float(options.get("velocity_scale", 1.0))
     sel = np.arange(robot.n) if joints is None else np.asarray(joints, dtype=int)
     if acceleration_limits is not None and acceleration_fraction is not None:
         raise InvalidInputError(

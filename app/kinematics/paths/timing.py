@@ -46,15 +46,14 @@ from __future__ import annotations
 import sys
 import threading
 import types
-from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Unpack
 
 import numpy as np
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.models import RobotModel
-from app.kinematics.paths.limits import joint_limits
+from app.kinematics.paths.limits import LimitOptions, joint_limits
 
 #: Most points a path may have for timing (the Cartesian path's own bound).
 MAX_POINTS = 100_000
@@ -268,13 +267,9 @@ def parameterize(
     robot: RobotModel,
     qs: np.ndarray,
     *,
-    velocity_limits: Sequence[float] | Mapping[str, float] | None = None,
-    acceleration_limits: Sequence[float] | Mapping[str, float] | None = None,
-    acceleration_fraction: float | None = None,
-    velocity_scale: float = 1.0,
-    joints: Sequence[int] | None = None,
     field: str = "timing",
     points_field: str = "points",
+    **limits: Unpack[LimitOptions],
 ) -> Timing:
     """The time-optimal rest-to-rest timing of the joint path ``qs`` (see the module).
 
@@ -309,16 +304,7 @@ def parameterize(
     arr = _check_points(robot, qs, points_field)
     n_pts = arr.shape[0]
     moving = np.flatnonzero(np.ptp(arr, axis=0) > SAME_POINT)
-    v, a = joint_limits(
-        robot,
-        moving,
-        velocity_limits=velocity_limits,
-        acceleration_limits=acceleration_limits,
-        acceleration_fraction=acceleration_fraction,
-        velocity_scale=velocity_scale,
-        joints=joints,
-        field=field,
-    )
+    v, a = joint_limits(robot, moving, field=field, **limits)
     zeros = np.zeros((n_pts, robot.n))
     # Each point's path parameter: the joint distance walked (Euclidean norm of the moving
     # joints' steps); points within SAME_POINT of walk from the last kept one merge into it.
