@@ -12,7 +12,7 @@ from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from app.api.schemas import Finite, Schema
 from app.kinematics.models import RobotModel
-from app.kinematics.paths.limits import DEFAULT_ACCELERATION_FRACTION
+from app.kinematics.paths.limits import DEFAULT_ACCELERATION_FRACTION, LIMIT_RANGE
 from app.kinematics.paths.timing import parameterize
 
 
@@ -37,9 +37,9 @@ def _one_form(value: Any, handler: ValidatorFunctionWrapHandler) -> Any:
         raise ValidationError.from_exception_data("joint limits", [detail]) from None
 
 
-#: A per-joint limit list or joint → limit map, each > 0: errors name
+#: A per-joint limit list or joint → limit map, each within LIMIT_RANGE: errors name
 #: ``timing.velocity_limits.3`` or ``timing.velocity_limits.<joint>``.
-Limit = Annotated[Finite, Field(gt=0.0)]
+Limit = Annotated[Finite, Field(ge=LIMIT_RANGE[0], le=LIMIT_RANGE[1])]
 JointLimits = Annotated[
     Annotated[list[Limit], Field(max_length=1000)]
     | Annotated[dict[Annotated[str, Field(max_length=256)], Limit], Field(max_length=1000)],
@@ -53,14 +53,16 @@ class TimingIn(Schema):
 
     velocity_limits: JointLimits | None = Field(
         None,
-        description="Joint velocity limits (rad/s or m/s, each > 0): one per joint in joint "
+        description="Joint velocity limits (rad/s or m/s, each within [1e-6, 1e9]): one per "
+        "joint in joint "
         "order (with `group`: one per joint of the group), or joint → limit (the others keep "
         "theirs). Default: the robot description's (URDF `<limit velocity>`); a joint that "
         "moves and has none (missing, 0) is an error naming timing.velocity_limits.<joint>.",
     )
     acceleration_limits: JointLimits | None = Field(
         None,
-        description="Joint acceleration limits (rad/s² or m/s², each > 0), as velocity_limits; "
+        description="Joint acceleration limits (rad/s² or m/s², each within [1e-6, 1e9]), as "
+        "velocity_limits; "
         "joints not given: acceleration_fraction × their velocity limit. Not with "
         "acceleration_fraction.",
     )

@@ -142,9 +142,9 @@ def test_duration_matches_toppras_own_trajectory(registry) -> None:
     [
         (1.0, 1.0, 3e-8, 3),
         (1.0, 1e-3, 1e-6, 50),
-        (1e-9, 1e-9, 1.0, 7),
-        (1e12, 1e-9, 1e-6, 7),
-        (1e-3, 1e12, 1e4, 50),
+        (1e-6, 1e-6, 1.0, 7),
+        (1e9, 1e-6, 1e-6, 7),
+        (1e-3, 1e9, 1e4, 50),
         (1e6, 1e6, 2e-9, 2),
     ],
 )
@@ -155,9 +155,11 @@ def test_limits_hold_at_any_scale_of_path_and_limits(v, a, length, n_points) -> 
     rng = np.random.default_rng(n_points)
     qs = np.cumsum(rng.normal(size=(n_points, 2)), axis=0)
     qs = (qs - qs[0]) * length / np.linalg.norm(np.diff(qs, axis=0), axis=1).sum()
-    result = parameterize(robot, qs, velocity_limits=[v, 3 * v], acceleration_limits=[a, 2 * a])
+    # The second joint's limits differ, within the accepted range [1e-6, 1e9].
+    v_max = np.array([v, 3 * v if 3 * v <= 1e9 else v / 3])
+    a_max = np.array([a, 2 * a if 2 * a <= 1e9 else a / 2])
+    result = parameterize(robot, qs, velocity_limits=v_max, acceleration_limits=a_max)
     check_limits(qs, result)
-    v_max, a_max = np.array([v, 3 * v]), np.array([a, 2 * a])
     peak = max(np.abs(result.qd / v_max).max(), np.abs(result.qdd / a_max).max())
     assert peak >= 0.98
 
@@ -321,10 +323,11 @@ def test_a_moving_joint_without_velocity_limit_is_named() -> None:
         parameterize(robot, qs)
     assert err.value.field == "timing.velocity_limits.c1"
     assert parameterize(robot, qs, velocity_limits={"c1": 2.0}).velocity_limits[0] == 2.0
-    zero = robot_of(planar_2link().replace('velocity="1"', 'velocity="0"', 1))
-    with pytest.raises(InvalidInputError) as err:
-        parameterize(zero, np.array([[0.0, 0.0], [0.5, 0.0]]))
-    assert err.value.field == "timing.velocity_limits.j1"
+    for placeholder in ("0", "1e12"):  # none, or "unlimited" written as a huge number
+        urdf = planar_2link().replace('velocity="1"', f'velocity="{placeholder}"', 1)
+        with pytest.raises(InvalidInputError) as err:
+            parameterize(robot_of(urdf), np.array([[0.0, 0.0], [0.5, 0.0]]))
+        assert err.value.field == "timing.velocity_limits.j1"
 
 
 @pytest.mark.parametrize(
@@ -334,6 +337,13 @@ def test_a_moving_joint_without_velocity_limit_is_named() -> None:
         ({"acceleration_limits": {"elbow_joint": -2.0}}, "timing.acceleration_limits.elbow_joint"),
         ({"velocity_limits": [1.0, 2.0]}, "timing.velocity_limits"),
         ({"velocity_limits": [1.0] * 5 + [math.inf]}, "timing.velocity_limits.5"),
+        ({"velocity_limits": [1e10] + [1.0] * 5}, "timing.velocity_limits.0"),
+        (
+            {"acceleration_limits": {"wrist_1_joint": 1e-7}},
+            "timing.acceleration_limits.wrist_1_joint",
+        ),
+        ({"acceleration_fraction": 1e-7}, "timing.acceleration_fraction"),
+        ({"velocity_scale": 1e-7}, "timing.velocity_scale"),
         (
             {"acceleration_limits": [1.0] * 6, "acceleration_fraction": 0.5},
             "timing.acceleration_fraction",
@@ -387,6 +397,7 @@ def test_wire_errors_name_the_item_or_the_joint() -> None:
     cases = [
         ({"acceleration_limits": [1, 2, 3, "x"]}, ("acceleration_limits", 3)),
         ({"acceleration_limits": [1, 2, 3, 0]}, ("acceleration_limits", 3)),
+        ({"velocity_limits": [1, 2e9]}, ("velocity_limits", 1)),
         ({"velocity_limits": {"elbow_joint": True}}, ("velocity_limits", "elbow_joint")),
         ({"velocity_limits": "fast"}, ("velocity_limits",)),
         ({"acceleration_fraction": -1}, ("acceleration_fraction",)),

@@ -21,6 +21,19 @@ from app.kinematics.models import RobotModel
 
 #: Acceleration limit, as a fraction of the velocity limit per second, when a joint has none.
 DEFAULT_ACCELERATION_FRACTION = 1.0
+#: The range of a usable limit, velocity (rad/s or m/s) or acceleration (rad/s² or m/s²): a
+#: description's velocity outside it is a placeholder (none usable), a given one an error.
+#: 1e-6 rad/s is 0.2°/hour; beyond the range the time parameterization loses precision.
+LIMIT_RANGE = (1e-6, 1e9)
+
+
+def usable(value: float | None) -> bool:
+    """Whether ``value`` is a usable limit: a number within :data:`LIMIT_RANGE`."""
+    return value is not None and LIMIT_RANGE[0] <= value <= LIMIT_RANGE[1]
+
+
+def _out_of_range(value: float) -> str:
+    return f"must lie within [{LIMIT_RANGE[0]:g}, {LIMIT_RANGE[1]:g}] (got {value:g})"
 
 
 def _given(
@@ -61,8 +74,8 @@ def _given(
             number = float(value)
         except (TypeError, ValueError):
             raise InvalidInputError("must be a number", path) from None
-        if not (math.isfinite(number) and number > 0.0):
-            raise InvalidInputError(f"must be a finite number > 0 (got {number:g})", path)
+        if not usable(number):
+            raise InvalidInputError(_out_of_range(number), path)
         out[index] = number
     return out
 
@@ -70,14 +83,18 @@ def _given(
 def description_velocity(robot: RobotModel, index: int) -> float | None:
     """The velocity limit (rad/s or m/s) the robot's description gives wire joint ``index``,
     lowered to ``v_f / |m|`` by every mimic follower ``f`` it leads (multiplier ``m``) that has
-    a limit; ``None`` when the joint has no usable one (missing, 0 or infinite)."""
-    limits = [robot.joints[index].velocity]
+    a usable one; ``None`` when the joint has no usable one (missing, 0, infinite: outside
+    :data:`LIMIT_RANGE`)."""
+    own = robot.joints[index].velocity
+    if not usable(own):
+        return None
+    limits = [own]
     for m in robot.mimic_joints:
         v_f = robot.urdf_joints.get(m.name, {}).get("velocity")
-        if m.leader_index == index and m.multiplier != 0.0 and v_f:
+        if m.leader_index == index and m.multiplier != 0.0 and usable(v_f):
             limits.append(v_f / abs(m.multiplier))
-    usable = [v for v in limits if v is not None and math.isfinite(v) and v > 0.0]
-    return min(usable) if usable and limits[0] is not None and limits[0] > 0.0 else None
+    lowest = min(limits)
+    return lowest if usable(lowest) else None
 
 
 class LimitOptions(TypedDict, total=False):
@@ -124,6 +141,7 @@ def joint_limits(
             raise InvalidInputError(
                 f"must be a finite number > 0 (got {fraction:g})", f"{field}.acceleration_fraction"
             )
+    fraction_field = f"{field}.acceleration_fraction"
     if not (math.isfinite(velocity_scale) and 0.0 < velocity_scale <= 1.0):
         raise InvalidInputError(
             f"must lie in (0, 1] (got {velocity_scale:g})", f"{field}.velocity_scale"
@@ -144,4 +162,11 @@ def joint_limits(
             )
         v[i] = v_max * velocity_scale
         a[i] = a_given[i] if i in a_given else fraction * v_max
+        for value, name in ((v[i], f"{field}.velocity_scale"), (a[i], fraction_field)):
+            if not usable(value):  # a product of two values in range can leave it
+                raise InvalidInputError(
+                    f"gives joint {robot.joints[i].name!r} a limit of {value:g}, outside "
+                    f"[{LIMIT_RANGE[0]:g}, {LIMIT_RANGE[1]:g}]",
+                    name,
+                )
     return v, a
