@@ -375,6 +375,9 @@ def test_points_are_bounded_and_shaped(registry, monkeypatch) -> None:
     with pytest.raises(InvalidInputError) as err:
         parameterize(robot, np.zeros((3, 5)))
     assert err.value.field == "points"
+    with pytest.raises(InvalidInputError) as err:
+        parameterize(robot, np.array([[0.0] * 6, [0, 0, math.nan, 0, 0, 0]]))
+    assert err.value.field == "points.1.2"
     monkeypatch.setattr(timing_mod, "MAX_POINTS", 10)
     with pytest.raises(InvalidInputError) as err:
         parameterize(robot, np.zeros((11, 6)))

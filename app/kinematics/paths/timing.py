@@ -52,7 +52,7 @@ from typing import Any, Unpack
 import numpy as np
 
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.models import RobotModel
+from app.kinematics.models import RobotModel, check_joint_values
 from app.kinematics.paths.limits import LimitOptions, joint_limits
 
 #: Most points a path may have for timing (the Cartesian path's own bound).
@@ -140,8 +140,7 @@ def _check_points(robot: RobotModel, qs: Any, field: str) -> np.ndarray:
         )
     if arr.shape[0] > MAX_POINTS:
         raise InvalidInputError(f"at most {MAX_POINTS} points (got {arr.shape[0]})", field)
-    if not np.isfinite(arr).all():
-        raise InvalidInputError("joint values must be finite", field)
+    check_joint_values(arr, field)  # finite, within ±MAX_JOINT_VALUE: names points.i.j
     return arr
 
 
