@@ -43,7 +43,7 @@ def _given(
     field: str,
 ) -> dict[int, float]:
     """Wire index → value of a per-joint list (over ``joints``, or over every joint when it
-    has one value per joint) or joint map; every value finite and > 0."""
+    has one value per joint) or joint map; every value within :data:`LIMIT_RANGE`."""
     if values is None:
         return {}
     if isinstance(values, Mapping):

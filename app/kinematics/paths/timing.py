@@ -282,7 +282,8 @@ def parameterize(
     velocity_limits, acceleration_limits
         Per joint (rad/s or m/s; rad/s² or m/s²): a list over ``joints`` (default: every
         joint, wire order) or a joint name → value map; joints not given take the defaults
-        of :func:`~app.kinematics.paths.limits.joint_limits`. Every value finite and > 0.
+        of :func:`~app.kinematics.paths.limits.joint_limits`. Every value within
+        :data:`~app.kinematics.paths.limits.LIMIT_RANGE` ([1e-6, 1e9]).
     acceleration_fraction
         Instead of ``acceleration_limits``: ``a_max = fraction · v_max / (1 s)`` per joint
         (default :data:`~app.kinematics.paths.limits.DEFAULT_ACCELERATION_FRACTION`).
@@ -297,8 +298,9 @@ def parameterize(
     Raises
     ------
     InvalidInputError
-        A joint that moves has no usable velocity limit; a limit not finite and > 0; both
-        acceleration forms given; points malformed.
+        A joint that moves has no usable velocity limit; a limit outside LIMIT_RANGE; both
+        acceleration forms given; points malformed; TOPP-RA failed (not seen on paths and
+        limits within range: a 422 naming ``timing``, never a 500).
     """
     arr = _check_points(robot, qs, points_field)
     n_pts = arr.shape[0]
