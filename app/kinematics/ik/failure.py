@@ -28,10 +28,13 @@ Reasons, in the order they are tested
     rejected every one of them.
 ``joint_limits``
     A candidate (a closed-form solution, or a converged iterate) reached the target within
-    tolerance only outside the joint limits; or the best iterate is pinned at a limit with
-    the descent direction pushing out: some joint i sits at its lower (upper) limit and the
-    gradient g = J_eᵀ e of the task error energy has g_i > 0 (< 0), with |g_i| at least
-    :data:`PINNED_SHARE` of the largest component (the joint is a real part of the descent).
+    tolerance only outside the joint limits; or a damped least-squares descent from the best
+    iterate that ignores the limits (at most :data:`UNCONSTRAINED_ITERATIONS` steps) reaches
+    the target within tolerance with some joint outside its limits; or the best iterate is
+    pinned at a limit with the descent direction pushing out: some joint i sits at its lower
+    (upper) limit and the gradient g = J_eᵀ e of the task error energy has g_i > 0 (< 0),
+    with |g_i| at least :data:`PINNED_SHARE` of the largest component (the joint is a real
+    part of the descent).
 ``singular``
     The best iterate's task Jacobian (task rows, weighted, the moving joints' columns) has a
     smallest singular value σ_min < :data:`SINGULAR_SIGMA` (m or rad per rad or m) and the
@@ -64,6 +67,8 @@ SINGULAR_SIGMA = 1e-3
 PINNED_SHARE = 0.01
 #: Iteration cap of the best-effort descent towards an unreachable target.
 UNREACHABLE_ITERATIONS = 60
+#: Iteration cap of the descent that ignores the joint limits (``joint_limits`` test).
+UNCONSTRAINED_ITERATIONS = 100
 #: Relative slack on the reach bound (rounding of the sums).
 REACH_SLACK = 1e-9
 
@@ -160,8 +165,9 @@ def unreachable_detail(
     )
 
 
-def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The weighted task Jacobian J_e (active columns) and the task error e at wire ``q``."""
+def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The weighted task Jacobian J_e (active columns), the weighted task error and the full
+    error e = [p − p_t; log3(R R_tᵀ)] at wire ``q``."""
     robot, ch = s.robot, s.ch
     model, data = robot.model, robot.model.createData()
     qp = robot.to_pin(q)
@@ -176,7 +182,33 @@ def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     Je, et = J[rows], e[rows]
     if s.sw is not None:
         Je, et = Je * s.sw[:, None], et * s.sw
-    return Je, et
+    return Je, et, e
+
+
+def _unconstrained(s: Search, q: np.ndarray) -> str | None:
+    """Descend from ``q`` ignoring the joint limits (damped least squares, at most
+    :data:`UNCONSTRAINED_ITERATIONS` steps); when that reaches the target within the
+    tolerances with joints outside their limits, the joints and values, else None."""
+    q = q.copy()
+    active = s.ch.active
+    for _ in range(UNCONSTRAINED_ITERATIONS):
+        Je, et, e = _task_jacobian(s, q)
+        if not np.isfinite(e).all():
+            return None
+        ep, er = s._checked(e)
+        if ep <= s.tol_p and er <= s.tol_r:
+            robot = s.robot
+            bad = [
+                f"{robot.joints[i].name} = {q[i]:.6g} outside [{robot.lower[i]:.6g}, "
+                f"{robot.upper[i]:.6g}]"
+                for i in active
+                if q[i] < robot.lower[i] or q[i] > robot.upper[i]
+            ]
+            return "; ".join(bad) or None
+        lam2 = 1e-6 + 1e-3 * float(et @ et)
+        A = Je @ Je.T + lam2 * np.eye(Je.shape[0])
+        q[active] -= Je.T @ np.linalg.solve(A, et)
+    return None
 
 
 def _pinned(s: Search, Je: np.ndarray, et: np.ndarray, qa: np.ndarray) -> str | None:
@@ -213,8 +245,14 @@ def classify(
             "joint_limits",
             f"the target is reached only outside the joint limits: {s.outside_limits}",
         )
+    outside = _unconstrained(s, q)
+    if outside is not None:
+        return "joint_limits", (
+            f"the target is reached only outside the joint limits (a descent ignoring them "
+            f"reaches it with {outside}); {errors}"
+        )
     qa = q[s.ch.active]
-    Je, et = _task_jacobian(s, q)
+    Je, et, _ = _task_jacobian(s, q)
     pinned = _pinned(s, Je, et, qa)
     if pinned is not None:
         return "joint_limits", (
