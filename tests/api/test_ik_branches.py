@@ -15,7 +15,7 @@ import httpx
 import numpy as np
 import pytest
 
-from app.kinematics.ik import SOLVER_VERSION
+from app.kinematics.ik.version import SOLVER_VERSION
 from app.kinematics.ik.failure import UNREACHABLE_ITERATIONS
 from tests.helpers import problem, serve
 
