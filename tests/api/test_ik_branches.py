@@ -96,7 +96,9 @@ def test_rank_by_manipulability_agrees_with_the_analysis_endpoint(client) -> Non
         assert ref.status_code == 200, ref.text
         assert s["manipulability"] == pytest.approx(ref.json()["yoshikawa"], rel=1e-9)
         w.append(ref.json()["yoshikawa"])
-    assert w == sorted(w, reverse=True)
+    # Descending (mirror-image elbows have equal measures: equal up to rounding).
+    assert all(a >= b * (1 - 1e-9) for a, b in itertools.pairwise(w))
+    assert w[0] > w[-1] * 1.1
 
 
 def test_rank_by_clearance_needs_obstacles(client) -> None:

@@ -155,7 +155,8 @@ def unreachable_detail(
     if bound is None:
         return None
     b, reach = bound
-    d = float(np.linalg.norm((target.translation - b)[axes]))
+    diff = target.translation - b
+    d = math.sqrt(sum(float(diff[i]) ** 2 for i in axes))
     if d <= reach * (1.0 + REACH_SLACK) + tol_p:
         return None
     return (
@@ -169,7 +170,7 @@ def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
     """The weighted task Jacobian J_e (active columns), the weighted task error and the full
     error e = [p − p_t; log3(R R_tᵀ)] at wire ``q``."""
     robot, ch = s.robot, s.ch
-    model, data = robot.model, robot.model.createData()
+    model, data = robot.model, robot.data
     qp = robot.to_pin(q)
     pin.computeJointJacobians(model, data, qp)
     T = pin.updateFramePlacement(model, data, ch.frame_id)
