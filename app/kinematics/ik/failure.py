@@ -156,7 +156,7 @@ def unreachable_detail(
         return None
     b, reach = bound
     diff = target.translation - b
-    d = math.sqrt(sum(float(diff[i]) ** 2 for i in axes))
+    d = math.hypot(*(float(diff[i]) for i in axes))  # hypot: no overflow of the squares
     if d <= reach * (1.0 + REACH_SLACK) + tol_p:
         return None
     return (
@@ -194,7 +194,7 @@ def _unconstrained(s: Search, q: np.ndarray) -> str | None:
     active = s.ch.active
     for _ in range(UNCONSTRAINED_ITERATIONS):
         Je, et, e = _task_jacobian(s, q)
-        if not np.isfinite(e).all():
+        if not (np.isfinite(e).all() and np.isfinite(Je).all()):
             return None
         ep, er = s._checked(e)
         if ep <= s.tol_p and er <= s.tol_r:
@@ -254,6 +254,8 @@ def classify(
         )
     qa = q[s.ch.active]
     Je, et, _ = _task_jacobian(s, q)
+    if not (np.isfinite(Je).all() and np.isfinite(et).all()):
+        return "timeout", f"the budget ran out; {errors}"  # no finite Jacobian to judge by
     pinned = _pinned(s, Je, et, qa)
     if pinned is not None:
         return "joint_limits", (
