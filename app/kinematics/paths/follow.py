@@ -45,6 +45,7 @@ from app.kinematics import ik
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.fk import frame_pose
 from app.kinematics.groups import default_frame, group
+from app.kinematics.ik.branches import branch_label
 from app.kinematics.ik.precompute import IKChain, ik_chain
 from app.kinematics.ik.problem import IKOptions, frame_name
 from app.kinematics.ik.search import wrap_angle
@@ -131,11 +132,9 @@ _Failed = tuple[ik.IKResult, Guard, pin.SE3, float]
 
 
 def branch_of(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None:
-    """The branch label of wire configuration ``q`` (None: the chain has no labels).
-
-    Placeholder until :func:`app.kinematics.ik.branches.branch_label` lands: no labels.
-    """
-    return None
+    """The branch label of wire configuration ``q`` (None: the chain has no labels;
+    :func:`app.kinematics.ik.branches.branch_label`)."""
+    return branch_label(robot, chain, q)
 
 
 def _frame_and_chain(robot: RobotModel, options: IKOptions) -> IKChain:

@@ -41,6 +41,8 @@ from app.kinematics.errors import InvalidInputError
 ROTATION_LENGTH = 0.1
 #: Most points :meth:`CartesianPath.sample` produces (beyond: InvalidInputError on max_step).
 MAX_POINTS = 100_000
+#: Segment length (m) below which a segment counts as zero-length (rounding of equal poses).
+ZERO_LENGTH = 1e-12
 #: Relative size of |(via − start) × (to − start)| below which the three arc points are
 #: collinear (or two coincide).
 COLLINEAR = 1e-9
@@ -89,6 +91,8 @@ class _Piece:
         self.th1 = float(np.linalg.norm(self.w1))
         self.th2 = float(np.linalg.norm(self.w2))
         self.length = math.hypot(self.travel, ROTATION_LENGTH * (self.th1 + self.th2))
+        if self.length <= ZERO_LENGTH:  # the end repeats the start (up to rounding)
+            self.length = 0.0
 
     def _circle(self, p0: np.ndarray, pv: np.ndarray, p1: np.ndarray, field: str) -> None:
         a, b = pv - p0, p1 - p0
