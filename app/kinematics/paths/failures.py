@@ -68,7 +68,10 @@ def residuals(T: pin.SE3, target: pin.SE3, task: Task) -> tuple[float, float]:
     """Position (m) and rotation (rad) error of ``T`` against ``target`` on the components the
     task checks (0 for one it does not)."""
     dp = T.translation - target.translation
-    e = np.concatenate((dp, pin.log3(T.rotation @ target.rotation.T)))
+    phi = pin.log3(T.rotation @ target.rotation.T)
+    if task.full_pose:
+        return math.hypot(*dp), math.hypot(*phi)
+    e = np.concatenate((dp, phi))
     r = task.rows
     ep = float(np.linalg.norm(e[r[r < 3]])) if task.check_pos else 0.0
     er = float(np.linalg.norm(e[r[r >= 3]])) if task.check_rot else 0.0
