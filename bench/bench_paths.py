@@ -109,7 +109,8 @@ def main() -> None:
         r = run(reg, rid, frame, n)
         print(f"| {r['robot']} | {r['frame']} | {100 * r['follow']:.1f}% | "
               f"{100 * r['naive']:.1f}% | {r['points']} | {r['follow_ms']:.3f} | "
-              f"{r['cold_ms']:.3f} | {r['follow_ms'] / r['cold_ms']:.2f} | {r['reasons']} | {r['failed_ms']:.1f} |",
+              f"{r['cold_ms']:.3f} | {r['follow_ms'] / r['cold_ms']:.2f} | {r['reasons']} "
+              f"| {r['failed_ms']:.1f} |",
               flush=True)  # fmt: skip
 
 

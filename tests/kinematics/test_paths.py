@@ -41,8 +41,11 @@ REASONS = {
 }
 #: Lines per chunk of the big test, chunks per arm (1000 lines per arm in all).
 CHUNK, CHUNKS = 100, 10
-#: Completed lines per chunk of 100, at least (measured: 73–90 UR5, 74–88 Panda; see below).
-FLOOR = {"ur5": 0.70, "panda": 0.70}
+#: Completed lines per chunk of 100, at least. Measured (2026-11-24): UR5 70–84 per chunk,
+#: 77.4 % of the 1000; Panda 72–87, 82.1 %. The others stop with a typed reason, mostly
+#: ``joint_limits`` (the line drives a joint into its limit: the UR5's ±2π wrists, the Panda's
+#: elbow) and ``singular`` (UR5 wrist and elbow); see docs/benchmarks.md.
+FLOOR = {"ur5": 0.65, "panda": 0.65}
 TOL = 1e-6
 
 
@@ -214,8 +217,9 @@ def test_line_blocked_by_an_obstacle_stops_before_it(registry) -> None:
 
 # -------------------------------------------------------------------- densification
 def test_long_arc_with_coarse_steps_is_densified(registry) -> None:
-    """UR5 half circle of radius 0.15 m (vertical plane) with max_step 0.2 m: between any two consecutive points
-    the linear joint motion stays within max_deviation of the arc (yourdfpy, 5 fractions)."""
+    """UR5 half circle of radius 0.15 m (vertical plane) with max_step 0.2 m: between any two
+    consecutive points the linear joint motion stays within max_deviation of the arc
+    (yourdfpy at 1/4, 1/2, 3/4)."""
     robot = registry.get("ur5")
     q0 = np.array([0.2, -1.4, 1.6, -1.8, -1.5, 0.3])
     T0 = pin.SE3(reference_pose(robot, q0, "tool0"))
