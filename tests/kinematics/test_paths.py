@@ -28,7 +28,7 @@ from app.kinematics.obstacles import parse_obstacles
 from app.kinematics.paths.follow import PathOptions, PathResult, follow, start_pose
 from app.kinematics.paths.segments import Arc, CartesianPath, Line
 from bench._lines import random_lines
-from tests.kinematics.reference import pose_error, reference_pose
+from tests.kinematics.reference import pose_error, reference_chain_pose, reference_pose
 
 REASONS = {
     "unreachable",
@@ -73,7 +73,8 @@ def check_points(
         assert b.s > a.s
         assert joint_distance(robot, a.q, b.q).max() <= options.max_joint_step + 1e-12
     for p in pts:
-        dp, dr = pose_error(reference_pose(robot, p.q, frame), path.pose_at(p.s).homogeneous)
+        T = reference_chain_pose(robot, p.q, frame)
+        dp, dr = pose_error(T, path.pose_at(p.s).homogeneous)
         assert dp <= tol * 1.01 and (dr <= tol * 1.01 or not rotation), (p.s, dp, dr)
         assert p.position_error == pytest.approx(dp, abs=1e-8)
     assert res.fraction == pts[-1].s
@@ -94,7 +95,14 @@ def test_random_lines_stay_on_one_branch(
     ch = ik_chain(robot, frame)
     opts = PathOptions(max_step=(0.02, 0.05), max_joint_step=0.1)
     completed = 0
-    for i, line in enumerate(random_lines(robot, frame, CHUNK, seed=1000 + chunk)):
+    lines = random_lines(robot, frame, CHUNK, seed=1000 + chunk)
+    # The chain composition of yourdfpy's joints is yourdfpy's FK (its scene graph).
+    np.testing.assert_allclose(
+        reference_chain_pose(robot, lines[0].q0, frame),
+        reference_pose(robot, lines[0].q0, frame),
+        atol=1e-14,
+    )
+    for i, line in enumerate(lines):
         path = CartesianPath.from_segments(line.start, [Line(line.end)])
         res = follow(robot, line.q0, path, ik_options(frame), opts, rng=np.random.default_rng(i))
         check_points(robot, frame, line.q0, path, res, opts)
