@@ -41,8 +41,8 @@ REASONS = {
 }
 #: Lines per chunk of the big test, chunks per arm (1000 lines per arm in all).
 CHUNK, CHUNKS = 100, 10
-#: Completed lines per chunk of 100, at least. Measured (2026-11-24): UR5 70–84 per chunk,
-#: 77.4 % of the 1000; Panda 72–87, 82.1 %. The others stop with a typed reason, mostly
+#: Completed lines per chunk of 100, at least. Measured (2026-11-24): UR5 69–83 per chunk,
+#: 76.4 % of the 1000; Panda 72–87, 81.4 %. The others stop with a typed reason, mostly
 #: ``joint_limits`` (the line drives a joint into its limit: the UR5's ±2π wrists, the Panda's
 #: elbow) and ``singular`` (UR5 wrist and elbow); see docs/benchmarks.md.
 FLOOR = {"ur5": 0.65, "panda": 0.65}
