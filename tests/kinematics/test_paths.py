@@ -4,8 +4,9 @@ references: yourdfpy poses, the planar arm's closed-form geometry, sphere–segm
 The big test draws 1000 straight lines per arm (UR5, Panda) inside the reachable set
 (:mod:`bench._lines`: a random start configuration, a random direction and length of
 0.1–0.5 m, orientation fixed, every one of 6 poses along the line solvable by IK) and
-follows each (waypoints every 4 cm, densified to 1 mm): every step within ``max_joint_step``, the branch label constant, every point's
-pose (yourdfpy) on the path within the IK tolerance. IK solves are capped in iterations with
+follows each (waypoints every 4 cm, densified to 1 mm): every step within
+``max_joint_step``, the branch label constant, every point's pose (yourdfpy) on the path
+within the IK tolerance. IK solves are capped in iterations with
 a generous time budget, so the answers do not depend on the machine's speed.
 """
 
