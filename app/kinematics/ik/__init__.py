@@ -111,7 +111,10 @@ from app.kinematics.ik.problem import (
     seed_configuration,
 )
 from app.kinematics.ik.search import IKResult, Search
+from app.kinematics.ik.version import SOLVER_VERSION
 from app.kinematics.models import RobotModel
+
+__all__ = ["SOLVER_VERSION", "IKResult", "solve"]
 
 _DEFAULT_OPTIONS = IKOptions()
 

@@ -74,6 +74,9 @@ class IKChain:
         self.mid_range = robot.mid_range()
         #: Closed-form geometry of the chain, set on first use by ``analytic_ik``.
         self.closed_form: tuple | None = None
+        #: Branch structure (:func:`app.kinematics.ik.branches.branch_form`); False until
+        #: detected on first use.
+        self.branch_form: object = False
         self._robot = robot
         self._poses: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
         self._poses_T: np.ndarray | None = None  # M transposed, for the compiled distances

@@ -1,0 +1,344 @@
+"""Following a Cartesian path: one joint configuration per point, the arm on one branch.
+
+:func:`follow` walks the waypoints of :meth:`CartesianPath.sample
+<app.kinematics.paths.segments.CartesianPath.sample>` from the start configuration. Each
+waypoint is solved by :func:`app.kinematics.ik.solve` seeded by the previous accepted
+configuration, and a solution is accepted only when
+
+- no joint moves more than ``max_joint_step`` (rad or m; continuous joints measured around
+  the circle, :func:`~app.kinematics.ik.search.joint_distance`),
+- its branch label (:func:`branch_of`) is the start's,
+- and the caller's ``accept`` (collision-free) holds.
+
+These guards run *inside* the solver (as its ``accept`` predicate), so a restart that lands on
+another branch is dropped and the search goes on, rather than ending on a solution that can
+never pass. The first attempt at a waypoint is local (at most :data:`LOCAL_ITERATIONS`
+Jacobian evaluations, the closed forms' candidates first where they exist); when it fails,
+the Cartesian step is halved (at most :data:`MAX_BISECT` times, each half solved in turn),
+and only then does a last attempt with the caller's whole budget decide, which also records
+why the candidates it met were refused (:mod:`.failures`).
+
+Densification: between two accepted points a, b the joints move linearly; the frame's pose
+along that motion is checked (forward kinematics at fractions :data:`FRACTIONS` of the step)
+against the path's pose at the same fraction of s. Where it deviates more than
+``max_deviation`` (m, rad, on the components the IK mode checks), the path's pose at the
+middle s is solved (seeded by a) and inserted, and both halves are checked again, at most
+:data:`MAX_DENSIFY_DEPTH` levels deep.
+
+The first waypoint that cannot be reached ends the walk: the result keeps the points reached
+(``fraction`` = s of the last one) and a :class:`PathFailure` with the waypoint's index in
+the sampled list, a typed ``reason`` and the best configuration met.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+
+import numpy as np
+import pinocchio as pin
+
+from app.kinematics import ik
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.fk import frame_pose
+from app.kinematics.groups import default_frame, group
+from app.kinematics.ik.branches import branch_label
+from app.kinematics.ik.precompute import IKChain, ik_chain
+from app.kinematics.ik.problem import IKOptions, frame_name
+from app.kinematics.ik.search import wrap_angle
+from app.kinematics.models import RobotModel
+from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
+from app.kinematics.paths.segments import CartesianPath, check_max_step
+
+__all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
+
+#: Jacobian evaluations of the first, local attempt at a waypoint (seeded by the last point).
+LOCAL_ITERATIONS = 30
+#: Halvings of a Cartesian step that the local attempt could not make, before giving up.
+MAX_BISECT = 4
+#: Levels of midpoints inserted between two accepted points to meet ``max_deviation``.
+MAX_DENSIFY_DEPTH = 6
+#: Fractions of a joint-space step at which the deviation from the path is checked.
+FRACTIONS = (0.25, 0.5, 0.75)
+
+
+@dataclass(frozen=True, slots=True)
+class PathOptions:
+    """How to follow a path (validated on construction, InvalidInputError naming the field).
+
+    Attributes
+    ----------
+    max_step
+        (position m, rotation rad): the most two consecutive waypoints of the sampled path
+        differ by.
+    max_joint_step
+        The most any joint may move between two consecutive points (rad or m).
+    max_deviation
+        (position m, rotation rad): the most the frame may stray from the path while the
+        joints move linearly between two points; points are inserted until it holds.
+    branch
+        The branch label the start must be on (:func:`branch_of`); None: any. Every point
+        keeps the start's label either way.
+    """
+
+    max_step: tuple[float, float] = (0.01, 0.05)
+    max_joint_step: float = 0.1
+    max_deviation: tuple[float, float] = (1e-3, 1e-2)
+    branch: str | None = None
+
+    def __post_init__(self) -> None:
+        check_max_step(float(self.max_step[0]), float(self.max_step[1]), "max_step")
+        if not (math.isfinite(self.max_joint_step) and self.max_joint_step > 0.0):
+            raise InvalidInputError("must be positive and finite", "max_joint_step")
+        check_max_step(float(self.max_deviation[0]), float(self.max_deviation[1]), "max_deviation")
+
+
+@dataclass(slots=True)
+class PathPoint:
+    """One point of the answer: wire configuration, its pose errors against the path's pose
+    at ``s`` (m, rad), and ``s``."""
+
+    q: np.ndarray
+    position_error: float
+    orientation_error: float
+    s: float
+
+
+@dataclass(slots=True)
+class PathResult:
+    """Outcome of :func:`follow`.
+
+    ``points`` start with the start configuration (s = 0); ``fraction`` is the s of the last
+    one (1.0 when the path was completed); ``failure`` is None then. ``branch`` is the
+    start's label, ``waypoints`` the number of sampled waypoints (densified points come on
+    top), ``iterations`` the Jacobian evaluations of every IK solve, ``solve_time_ms`` the
+    wall time.
+    """
+
+    points: list[PathPoint]
+    fraction: float
+    failure: PathFailure | None
+    branch: str | None
+    waypoints: int
+    iterations: int
+    solve_time_ms: float
+
+
+#: A failed attempt: the IK result, its guard, the pose attempted and its s.
+_Failed = tuple[ik.IKResult, Guard, pin.SE3, float]
+
+
+def branch_of(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None:
+    """The branch label of wire configuration ``q`` (None: the chain has no labels;
+    :func:`app.kinematics.ik.branches.branch_label`)."""
+    return branch_label(robot, chain, q)
+
+
+def _frame_and_chain(robot: RobotModel, options: IKOptions) -> IKChain:
+    grp = group(robot, options.group)
+    return ik_chain(robot, frame_name(robot, default_frame(robot, grp, options.frame)), grp)
+
+
+def start_pose(robot: RobotModel, start: np.ndarray, options: IKOptions) -> pin.SE3:
+    """The path's start: the placement of the IK frame (``options.frame`` or the group's tip)
+    at wire configuration ``start``, in the root frame."""
+    ch = _frame_and_chain(robot, options)
+    return frame_pose(robot, robot.configuration(start, field="start"), ch.frame_id)
+
+
+class _Walk:
+    """One call of :func:`follow`: its inputs, counters and solve helpers."""
+
+    def __init__(
+        self,
+        robot: RobotModel,
+        path: CartesianPath,
+        ik_options: IKOptions,
+        options: PathOptions,
+        accept: Callable[[np.ndarray], bool] | None,
+        rng: np.random.Generator | None,
+        cancel: threading.Event | None,
+    ) -> None:
+        self.robot, self.path, self.options = robot, path, options
+        self.ch = _frame_and_chain(robot, ik_options)
+        self.task = ik_options.task()
+        self.full = replace(ik_options, num_solutions=1)
+        cap = ik_options.max_iterations
+        local_cap = LOCAL_ITERATIONS if cap is None else min(cap, LOCAL_ITERATIONS)
+        self.local = replace(self.full, max_iterations=local_cap)
+        self.accept, self.rng, self.cancel = accept, rng, cancel
+        self.iterations = 0
+        self.label: str | None = None
+        self.points: list[PathPoint] = []
+
+    # ------------------------------------------------------------------ solving
+    def guard(self, q_prev: np.ndarray, record_all: bool = False) -> Guard:
+        return Guard(
+            self.robot,
+            self.ch,
+            q_prev,
+            self.options.max_joint_step,
+            self.label,
+            lambda q: branch_of(self.robot, self.ch, q),
+            self.accept,
+            record_all,
+        )
+
+    def solve(
+        self, q_prev: np.ndarray, T: pin.SE3, full: bool = False
+    ) -> tuple[ik.IKResult, Guard]:
+        """IK of ``T`` seeded by ``q_prev`` under the guards (local budget unless ``full``)."""
+        g = self.guard(q_prev, record_all=full)
+        res = ik.solve(
+            self.robot,
+            T,
+            self.full if full else self.local,
+            seed=q_prev,
+            accept=g,
+            rng=self.rng,
+            cancel=self.cancel,
+        )
+        self.iterations += res.iterations
+        return res, g
+
+    # ------------------------------------------------------------------- walking
+    def advance(self, T_b: pin.SE3, s_b: float, depth: int = 0) -> _Failed | None:
+        """Append the points from the last one to the pose ``T_b`` at ``s_b`` (included),
+        halving the step when the local attempt fails; on failure the last attempt (the
+        points reached on the way stay)."""
+        a = self.points[-1]
+        res, g = self.solve(a.q, T_b)
+        if not res.success and depth >= MAX_BISECT:
+            res, g = self.solve(a.q, T_b, full=True)
+        if res.success:
+            return self.densify(a, PathPoint(res.q, res.position_error, res.orientation_error, s_b))
+        if depth >= MAX_BISECT:
+            return res, g, T_b, s_b
+        s_m = 0.5 * (a.s + s_b)
+        return self.advance(self.path.pose_at(s_m), s_m, depth + 1) or self.advance(
+            T_b, s_b, depth + 1
+        )
+
+    def deviation(self, a: PathPoint, b: PathPoint) -> tuple[float, float]:
+        """The largest position and rotation deviation (m, rad) from the path of the frame
+        while the joints move linearly from a to b, at :data:`FRACTIONS`."""
+        robot = self.robot
+        dq = b.q - a.q
+        if robot.has_continuous:
+            c = robot._cont_wire
+            dq[c] = wrap_angle(dq[c])
+        worst_p = worst_r = 0.0
+        for f in FRACTIONS:
+            T = frame_pose(robot, a.q + f * dq, self.ch.frame_id)
+            ep, er = residuals(T, self.path.pose_at(a.s + f * (b.s - a.s)), self.task)
+            worst_p, worst_r = max(worst_p, ep), max(worst_r, er)
+        return worst_p, worst_r
+
+    def densify(self, a: PathPoint, b: PathPoint, depth: int = 0) -> _Failed | None:
+        """Append ``b`` preceded by the midpoints needed to keep the linear joint motion from
+        ``a`` (the last point) within ``max_deviation`` of the path; on failure the failing
+        attempt (the midpoints appended so far stay)."""
+        dev_p, dev_r = self.options.max_deviation
+        ep, er = self.deviation(a, b)
+        if ep <= dev_p and er <= dev_r:
+            self.points.append(b)
+            return None
+        s_m = 0.5 * (a.s + b.s)
+        T_m = self.path.pose_at(s_m)
+        if depth >= MAX_DENSIFY_DEPTH:
+            res, g = self.solve(a.q, T_m, full=True)
+            g.deviation = (ep, er, depth)
+            return res, g, T_m, s_m
+        res, g = self.solve(a.q, T_m)
+        if not res.success:
+            res, g = self.solve(a.q, T_m, full=True)
+            if not res.success:
+                return res, g, T_m, s_m
+        m = PathPoint(res.q, res.position_error, res.orientation_error, s_m)
+        return self.densify(a, m, depth + 1) or self.densify(m, b, depth + 1)
+
+
+def follow(
+    robot: RobotModel,
+    start: np.ndarray,
+    path: CartesianPath,
+    ik_options: IKOptions,
+    options: PathOptions = PathOptions(),  # noqa: B008 (frozen: never mutated)
+    *,
+    accept: Callable[[np.ndarray], bool] | None = None,
+    rng: np.random.Generator | None = None,
+    cancel: threading.Event | None = None,
+) -> PathResult:
+    """Joint configurations following ``path`` from ``start`` (see the module docstring).
+
+    Parameters
+    ----------
+    robot
+        The robot.
+    start
+        Full wire configuration (rad or m) where the path starts; the path's start pose
+        must be the frame's placement there (:func:`start_pose`).
+    path
+        The Cartesian path of the frame, in the root frame.
+    ik_options
+        Frame or group, mode, weights, tolerances and budget of each IK solve (per point).
+    options
+        Sampling step, joint-step bound, deviation bound, required branch.
+    accept
+        Optional predicate on a wire configuration (collision-free); points that fail it are
+        never returned.
+    rng, cancel
+        Passed to every :func:`app.kinematics.ik.solve` (restarts; the client went away).
+
+    Returns
+    -------
+    PathResult
+        The points reached and, when the path could not be completed, the typed failure.
+    """
+    t0 = time.perf_counter()
+    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel)
+    q0 = robot.configuration(start, field="start")
+    for i in np.flatnonzero((q0 < robot.lower) | (q0 > robot.upper)):
+        raise InvalidInputError(
+            f"joint {robot.joints[i].name} = {q0[i]:g} lies outside its limits "
+            f"[{robot.lower[i]:g}, {robot.upper[i]:g}]",
+            f"start.{i}",
+        )
+    walk.label = label = branch_of(robot, walk.ch, q0)
+    if options.branch is not None and label != options.branch:
+        where = "has no branch labels" if label is None else f"starts on branch {label!r}"
+        raise InvalidInputError(f"the path {where}, not {options.branch!r}", "branch")
+    ep, er = residuals(frame_pose(robot, q0, walk.ch.frame_id), path.start, walk.task)
+    tol_p, tol_r = ik_options.tolerance
+    if ep > tol_p or er > tol_r:
+        raise InvalidInputError(
+            f"the path does not start at the frame's pose at start ({ep:.3g} m, {er:.3g} rad away)",
+            "start",
+        )
+    poses, ss = path.sample(options.max_step)
+    points = walk.points
+    failure: PathFailure | None = None
+    if accept is not None and not accept(q0):
+        failure = PathFailure(
+            0, 0.0, "collision", "the start configuration is in collision", q0.copy(), ep, er
+        )
+    else:
+        points.append(PathPoint(q0.copy(), ep, er, 0.0))
+    for k in range(1, len(poses)) if failure is None else ():
+        out = walk.advance(poses[k], float(ss[k]))
+        if out is not None:
+            res, g, T, s = out
+            failure = classify(walk.robot, walk.ch, walk.task, k, s, points[-1], res, g, T)
+            break
+    return PathResult(
+        points,
+        points[-1].s if points else 0.0,
+        failure,
+        label,
+        len(poses),
+        walk.iterations,
+        (time.perf_counter() - t0) * 1e3,
+    )
