@@ -29,7 +29,7 @@ ISSUE_BODY = {
     "random_seed": 7,
 }
 #: A budget that does not depend on the machine's speed.
-BUDGET = {"timeout_ms": 200, "max_iterations": 400}
+BUDGET = {"timeout_ms": 100, "max_iterations": 400}
 
 
 def _pose(registry, robot_id: str, q, frame: str) -> np.ndarray:
@@ -114,7 +114,9 @@ def test_a_reachable_line_completes_and_is_dense(client, registry) -> None:
         assert dp <= 5e-4 + 1e-9 and dr <= 5e-3 + 1e-9
 
 
-def test_an_unreachable_end_stops_with_its_reason(client, registry) -> None:
+def test_a_line_out_of_the_workspace_stops_with_its_reason(client, registry) -> None:
+    """A line 2 m out: the arm stretches to the edge of its workspace (an elbow singularity)
+    and stops there, or at the first point beyond its reach bound."""
     q0 = [0.2, -1.2, 1.4, -1.6, -1.5, 0.3]
     T0 = _pose(registry, "ur5", q0, "tool0")
     far = (T0[:3, 3] + [2.0, 0.0, 0.0]).tolist()
@@ -126,7 +128,7 @@ def test_an_unreachable_end_stops_with_its_reason(client, registry) -> None:
     out = client.post("/robots/ur5/ik/path", json=body).json()
     assert 0.0 < out["fraction"] < 1.0
     f = out["failure"]
-    assert f["reason"] == "unreachable", f
+    assert f["reason"] in {"singular", "unreachable"}, f
     assert f["index"] >= 1 and f["s"] > out["fraction"] and f["detail"]
     assert len(f["q"]) == 6 and f["position_error"] > 1e-5
     T1 = T0.copy()
@@ -199,7 +201,7 @@ def test_same_random_seed_same_answer_on_two_workers(tmp_path) -> None:
     """A Panda path with random_seed: every answer identical apart from its timing, from
     fresh connections to a two-worker server."""
     body = {
-        "start": [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.8],
+        "start": [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.8, 0.02],
         "segments": [
             {"type": "line", "to": {"position": [0.45, 0.15, 0.35], "orientation": [1, 0, 0, 0]}}
         ],
