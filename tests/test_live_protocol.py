@@ -68,8 +68,9 @@ def test_sigterm_answers_a_request_cut_off_at_the_graceful_timeout_with_a_503(
     }
     with serve(tmp_path / "data", settings=settings) as server:
         url, proc = server.url, server.proc
-        # 8 unreachable targets (10 m away) at 1 s each: the batch runs ~8 s.
-        far = {"position": [10.0, 0.0, 0.0], "orientation": [0.0, 0.0, 0.0, 1.0]}
+        # 8 unreachable targets at 1 s each: the batch runs ~8 s. 1.1 m away: beyond the UR5's
+        # reach (~0.95 m) but inside its reach bound (1.24 m), so each is searched to the end.
+        far = {"position": [1.1, 0.0, 0.1], "orientation": [0.0, 0.0, 0.0, 1.0]}
         body = {"targets": [far] * 8, "timeout_ms": 1000, "chain_seeds": False}
         result: dict[str, httpx.Response | BaseException] = {}
 

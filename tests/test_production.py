@@ -412,8 +412,10 @@ def test_metric_label_values_are_escaped() -> None:
 # ---------------------------------------------------------------------------------------------
 # A live server: responsiveness under long work, graceful shutdown
 
-#: An IK batch that cannot converge: each target takes its whole 1000 ms budget.
-SLOW_IK = {"targets": [{"position": [3.0, 3.0, 3.0]}] * 3, "mode": "position", "timeout_ms": 1000}
+#: An IK batch that cannot converge: each target takes its whole 1000 ms budget (1.0 m from the
+#: panda's shoulder: beyond its reach, ~0.95 m, but inside the reach bound, 1.09 m, that would
+#: answer unreachable at once).
+SLOW_IK = {"targets": [{"position": [0.0, 1.0, 0.333]}] * 3, "mode": "position", "timeout_ms": 1000}
 
 
 def test_health_answers_while_long_batches_run(tmp_path) -> None:

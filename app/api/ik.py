@@ -15,6 +15,7 @@ from app.api.ik_request import (
     Collisions,
     accept_of,
     check_budget,
+    clearance_of,
     collisions_of,
     options_of,
     rng_of,
@@ -58,6 +59,7 @@ def _solve_one(
         accept=accept_of(robot, collisions),
         rng=rng,
         cancel=cancel,
+        clearance=clearance_of(robot, collisions),
     )
     record_ik(res.success)
     return {
@@ -76,6 +78,10 @@ def _solve_one(
                 "joint_positions": _named(robot, s.q),
                 "position_error": s.position_error,
                 "orientation_error": s.orientation_error,
+                "branch": s.branch,
+                "seed_distance": s.seed_distance,
+                "manipulability": s.manipulability,
+                "clearance": s.clearance,
             }
             for s in res.solutions
         ],
@@ -83,6 +89,9 @@ def _solve_one(
         "restarts": res.restarts,
         "solve_time_ms": res.solve_time_ms,
         "method": res.method,
+        "reason": res.reason,
+        "detail": res.detail,
+        "solver_version": ik.SOLVER_VERSION,
     }
 
 
@@ -119,6 +128,8 @@ def _solve_batch(
                 "iterations": res.iterations,
                 "restarts": res.restarts,
                 "solve_time_ms": res.solve_time_ms,
+                "reason": res.reason,
+                "detail": res.detail,
             }
         )
     return {
@@ -129,6 +140,7 @@ def _solve_batch(
         "solved": solved,
         "results": results,
         "total_time_ms": (time.perf_counter() - t0) * 1e3,
+        "solver_version": ik.SOLVER_VERSION,
     }
 
 
@@ -155,7 +167,7 @@ async def solve_ik(
     """
     check_budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
-    options = options_of(robot, body, body.num_solutions)
+    options = options_of(robot, body, body.num_solutions, body.rank_by)
     collisions = collisions_of(request, body)
     target = target_of(body.target, body.mode)
     seed = group_seed(robot, group(robot, body.group), body.seed)

@@ -19,6 +19,7 @@ from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.problem import IKOptions, frame_name, target_placement
+from app.kinematics.ik.ranking import clearance_function
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
 
@@ -61,7 +62,17 @@ def accept_of(robot: RobotModel, collisions: Collisions | None) -> Any:
     return collision_filter(robot, obstacles, margin=margin, mode=geometry)
 
 
-def options_of(robot: RobotModel, body: IKTaskIn, num_solutions: int = 1) -> IKOptions:
+def clearance_of(robot: RobotModel, collisions: Collisions | None) -> Any:
+    """``q ↦`` the smallest robot–obstacle distance, or None without obstacles."""
+    if collisions is None:
+        return None
+    obstacles, _, geometry = collisions
+    return clearance_function(robot, obstacles, geometry)
+
+
+def options_of(
+    robot: RobotModel, body: IKTaskIn, num_solutions: int = 1, rank_by: str = "seed_distance"
+) -> IKOptions:
     """The core's options from the request body (validated there)."""
     return IKOptions(
         frame=frame_name(robot, default_frame(robot, group(robot, body.group), body.frame)),
@@ -72,6 +83,7 @@ def options_of(robot: RobotModel, body: IKTaskIn, num_solutions: int = 1) -> IKO
         timeout_ms=body.timeout_ms,
         max_iterations=body.max_iterations,
         num_solutions=num_solutions,
+        rank_by=rank_by,
     )
 
 

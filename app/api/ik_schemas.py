@@ -13,6 +13,20 @@ from app.api.schemas import Finite, Matrix4, Position3, Quat, Schema, group_fiel
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
 
+Reason = Literal["unreachable", "joint_limits", "collision", "singular", "timeout"]
+
+REASON_DOC = (
+    "Why no solution was found (null on success): unreachable (the target position is "
+    "beyond the chain's reach bound; the search is skipped) | joint_limits (reached only "
+    "outside the limits, or the best configuration is pinned at a limit) | collision (every "
+    "solution found collides) | singular (the search stalled at a singular configuration) | "
+    "timeout (the time budget or max_iterations ended the search). See docs/ik.md."
+)
+SOLVER_VERSION_DOC = (
+    "The solver's name and version: with random_seed (and max_iterations), the same request "
+    "gives the same answer, bit for bit, on any worker of the same solver_version."
+)
+
 MODE_DOC = (
     "pose (default): full 6-D pose | position: the frame origin only, orientation free "
     "(3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only."
@@ -109,7 +123,17 @@ class IKRequest(IKOptionsIn):
 
     target: Target
     num_solutions: int = Field(
-        1, ge=1, le=64, description="Distinct solutions wanted (e.g. elbow up/down)."
+        1,
+        ge=1,
+        le=64,
+        description="Distinct solutions wanted: one per branch (shoulder/elbow/wrist flags "
+        "where the arm has them, else clusters in joint space; see docs/ik.md).",
+    )
+    rank_by: Literal["seed_distance", "manipulability", "clearance"] = Field(
+        "seed_distance",
+        description="Order of the solutions: seed_distance (smallest largest-joint move "
+        "first) | manipulability (largest Yoshikawa measure first) | clearance (largest "
+        "distance to the obstacles first; needs avoid_collisions with obstacles or a scene).",
     )
 
 
@@ -120,6 +144,21 @@ class IKSolutionOut(BaseModel):
     joint_positions: dict[str, float]
     position_error: float = Field(description="‖p − p_t‖ (m), by forward kinematics.")
     orientation_error: float = Field(description="Rotation angle to the target (rad).")
+    branch: str = Field(
+        description='Its branch: flags such as "shoulder_left/elbow_up/wrist_noflip" '
+        '(UR-type and spherical-wrist 6R arms; planar 2-link arms: "elbow_up"/"elbow_down"), '
+        'else "cluster_<k>" (joint-space clusters, cluster_0 nearest the seed).'
+    )
+    seed_distance: float = Field(
+        description="Largest single-joint move from the seed (rad or m; continuous joints "
+        "around the circle)."
+    )
+    manipulability: float = Field(
+        description="Yoshikawa measure ∏σ_i of the frame Jacobian over the moving joints."
+    )
+    clearance: float | None = Field(
+        description="With obstacles: smallest robot–obstacle distance (m), else null."
+    )
 
 
 class IKResponse(BaseModel):
@@ -134,11 +173,16 @@ class IKResponse(BaseModel):
     joint_positions: dict[str, float]
     position_error: float = Field(description="Of q: ‖p − p_t‖ (m).")
     orientation_error: float = Field(description="Of q: rotation angle to the target (rad).")
-    solutions: list[IKSolutionOut] = Field(description="Distinct solutions, nearest seed first.")
+    solutions: list[IKSolutionOut] = Field(
+        description="Distinct solutions, one per branch, in rank_by order."
+    )
     iterations: int
     restarts: int
     solve_time_ms: float
     method: str = Field(description="analytic | numeric | analytic+numeric")
+    reason: Reason | None = Field(description=REASON_DOC)
+    detail: str | None = Field(description="The reason in a sentence, with numbers.")
+    solver_version: str = Field(description=SOLVER_VERSION_DOC)
 
 
 class IKBatchRequest(IKOptionsIn):
@@ -163,6 +207,8 @@ class IKBatchItem(BaseModel):
     iterations: int
     restarts: int
     solve_time_ms: float
+    reason: Reason | None = Field(description=REASON_DOC)
+    detail: str | None = Field(description="The reason in a sentence, with numbers.")
 
 
 class IKBatchResponse(BaseModel):
@@ -175,3 +221,4 @@ class IKBatchResponse(BaseModel):
     solved: int = Field(description="How many targets succeeded.")
     results: list[IKBatchItem]
     total_time_ms: float
+    solver_version: str = Field(description=SOLVER_VERSION_DOC)

@@ -35,6 +35,32 @@ def reference_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.ndarray:
     return urdf.get_transform(frame, urdf.base_link)
 
 
+def _chain(robot: RobotModel, frame: str) -> list[tuple[object, int | None]]:
+    """The yourdfpy joints from the base link to link ``frame``, each with its index in the
+    wire configuration (None: not actuated)."""
+    urdf = _urdf(robot)
+    by_child = {j.child: j for j in urdf.robot.joints}
+    names = urdf.actuated_joint_names
+    out, link = [], frame
+    while link in by_child:
+        j = by_child[link]
+        if j.mimic is not None:
+            raise NotImplementedError("mimic joints: use reference_pose")
+        out.append((j, names.index(j.name) if j.name in names else None))
+        link = j.parent
+    return out[::-1]
+
+
+def reference_chain_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.ndarray:
+    """World pose of link ``frame`` by yourdfpy's joint transforms composed along its chain
+    (:func:`reference_pose` without the scene-graph update of every link: for many poses)."""
+    urdf = _urdf(robot)
+    T = np.eye(4)
+    for j, i in robot.lazy(f"test.yourdfpy.chain:{frame}", lambda r: _chain(r, frame)):
+        T = T @ urdf._forward_kinematics_joint(j, q=None if i is None else float(q[i]))[0]
+    return T
+
+
 def pose_error(T: np.ndarray, target: np.ndarray) -> tuple[float, float]:
     """Position distance and rotation angle between two 4×4 poses.
 

@@ -102,6 +102,7 @@ from app.kinematics.errors import Cancelled
 from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.compiled import run_compiled
 from app.kinematics.ik.dls import run_python
+from app.kinematics.ik.failure import UNREACHABLE_ITERATIONS, unreachable_detail
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import (
     IKOptions,
@@ -110,6 +111,7 @@ from app.kinematics.ik.problem import (
     frame_name,
     seed_configuration,
 )
+from app.kinematics.ik.ranking import check_rank_by
 from app.kinematics.ik.search import IKResult, Search
 from app.kinematics.ik.version import SOLVER_VERSION
 from app.kinematics.models import RobotModel
@@ -128,6 +130,7 @@ def solve(
     accept: Callable[[np.ndarray], bool] | None = None,
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
+    clearance: Callable[[np.ndarray], float] | None = None,
 ) -> IKResult:
     """Joint configurations placing ``options.frame`` at ``target``.
 
@@ -155,15 +158,23 @@ def solve(
         Optional event: once set (the caller's client went away), the search stops within
         one iteration (the Python loop) or one attempt (compiled, ≤ 20 iterations) and
         :class:`~app.kinematics.errors.Cancelled` is raised.
+    clearance
+        Optional ``q ↦`` smallest robot–obstacle distance (m)
+        (:func:`~app.kinematics.ik.ranking.clearance_function`): reported with each solution,
+        and required by ``options.rank_by == "clearance"`` (else InvalidInputError naming
+        ``rank_by``).
 
     Returns
     -------
     IKResult
         ``success`` when at least one verified solution was found; the solutions come back
-        sorted by their distance to the seed, and the search stops early once
-        ``options.num_solutions`` are found. Otherwise ``q`` is the lowest-error
-        configuration met and ``status`` says whether the time budget (``timeout``) or the
-        iteration cap (``not_converged``) ended the search.
+        one per branch, labelled and ranked by ``options.rank_by`` (:mod:`.ranking`), and the
+        search stops early once ``options.num_solutions`` branches are found (closed forms:
+        every closed-form candidate is verified first when several solutions are wanted or
+        the ranking is not by seed distance). Otherwise ``q`` is the lowest-error
+        configuration met, ``status`` says whether the time budget (``timeout``) or the
+        iteration cap (``not_converged``) ended the search, and ``reason``/``detail`` say why
+        (:mod:`.failure`; ``unreachable`` skips the search).
     """
     grp = group(robot, options.group)
     ch = ik_chain(robot, frame_name(robot, default_frame(robot, grp, options.frame)), grp)
@@ -175,23 +186,40 @@ def solve(
     deadline = t_start + options.timeout_ms * 1e-3
     if cancel is not None and cancel.is_set():
         raise Cancelled()
-    problem = IKProblem(robot, ch, target, q_seed, options, options.task())
-    search = Search(problem, accept=accept, cancel=cancel, rng=rng)
+    check_rank_by(options.rank_by, clearance)
+    task = options.task()
+    problem = IKProblem(robot, ch, target, q_seed, options, task)
+    search = Search(problem, accept=accept, cancel=cancel, rng=rng, clearance=clearance)
+    axes = task.rows[task.rows < 3] if task.check_pos else task.rows[:0]
+    far = unreachable_detail(robot, ch, q_seed, target, axes, search.tol_p)
+    if far is not None:
+        # No solution exists: a short best-effort descent towards the target, then the reason.
+        cap = min(options.max_iterations or UNREACHABLE_ITERATIONS, UNREACHABLE_ITERATIONS)
+        _descend(search, deadline, cap)
+        res = search.result("numeric", t_start)
+        res.reason, res.detail = "unreachable", far
+        return res
 
     method = "numeric"
     if options.analytic:
         cands = candidates(robot, ch, target, options.mode, q_seed)
         if cands is not None:
             method = "analytic"
+            every = options.num_solutions > 1 or options.rank_by != "seed_distance"
             for qa in cands:
                 search.offer(qa)
-                if search.done():
+                if search.done() and not every:
                     break
     if not search.done():
         if method == "analytic":
             method = "analytic+numeric"
-        if search.full_pose and ch.compiled is not None:
-            run_compiled(search, deadline, options.max_iterations)
-        else:
-            run_python(search, deadline, options.max_iterations)
+        _descend(search, deadline, options.max_iterations)
     return search.result(method, t_start)
+
+
+def _descend(search: Search, deadline: float, max_iterations: int | None) -> None:
+    """The numeric search: the compiled loop where it applies (full pose), else Python."""
+    if search.full_pose and search.ch.compiled is not None:
+        run_compiled(search, deadline, max_iterations)
+    else:
+        run_python(search, deadline, max_iterations)

@@ -21,13 +21,14 @@ once at q = 0.
   Vision and Intelligence*, §3.3); ``left`` otherwise. The two solutions of joint 1 put the
   wrist point on opposite sides of the plane spanned by z_1 and z_2 through o_2, so they get
   different shoulder flags.
-- elbow (joints 2 and 3 revolute with parallel axes): with e = o_3 the elbow, t = w the
-  end of the 2-link arm of axes 2 and 3 (UR type: t = o_4, a point of axis 4, parallel to
-  axis 2), ``up`` when shoulder · [z_2, e − o_2, t − e] < 0 (shoulder = ±1 as above): for
-  a right shoulder, going from shoulder to elbow to wrist turns clockwise about z_2, which
-  puts the elbow on the +z_1 side of the shoulder–wrist line. The product with the shoulder
-  sign makes the flag independent of the direction of z_2. The two elbow solutions of a
-  2-link arm are mirror images across the shoulder–wrist line, so they get different flags.
+- elbow (joints 2 and 3 revolute with parallel axes): with e = o_3 the elbow and t the end
+  of the 2-link arm of axes 2 and 3 (spherical wrist: t = w; UR type: t = o_4, a point of
+  axis 4, parallel to axis 2), ``up`` when the elbow lies on the +z_1 side of the line from
+  the shoulder o_2 to t in the arm's plane (normal z_2), i.e. when
+  [z_2, e − o_2, t − e] · [z_1, z_2, t − o_2] < 0 (the turn from upper arm to forearm about
+  z_2, times the side of the plane of z_1 and z_2 on which t lies). Each factor uses z_2
+  once, so the flag does not depend on the direction of z_2. The two elbow solutions of a
+  2-link arm are mirror images across the line from o_2 to t, so they get different flags.
   No elbow flag when joint 2 or 3 is prismatic (the Stanford arm).
 - wrist: ``noflip`` when [z_4, z_6, z_5] > 0, ``flip`` otherwise. For orthogonal
   consecutive axes this is ±sin(q_5 + β) (β the zero offset): the two wrist solutions of the
@@ -183,7 +184,8 @@ def branch_label(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None
     if form.elbow:
         t = o[3] if form.tip_axis4 else w
         turn = float(np.cross(z[1], o[2] - o[1]) @ (t - o[2]))
-        parts.append("elbow_up" if shoulder * turn < 0.0 else "elbow_down")
+        side = float(np.cross(z[0], z[1]) @ (t - o[1]))
+        parts.append("elbow_up" if turn * side < 0.0 else "elbow_down")
     noflip = float(np.cross(z[3], z[5]) @ z[4]) >= 0.0
     parts.append("wrist_noflip" if noflip else "wrist_flip")
     return "/".join(parts)

@@ -77,6 +77,9 @@ class IKChain:
         #: Branch structure (:func:`app.kinematics.ik.branches.branch_form`); False until
         #: detected on first use.
         self.branch_form: object = False
+        #: Reach bound parts (:func:`app.kinematics.ik.failure.reach_bound`); False until
+        #: computed on first use.
+        self.reach_parts: object = False
         self._robot = robot
         self._poses: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
         self._poses_T: np.ndarray | None = None  # M transposed, for the compiled distances

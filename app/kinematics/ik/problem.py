@@ -31,6 +31,8 @@ Mode = Literal["pose", "position", "orientation"]
 Status = Literal["converged", "not_converged", "timeout"]
 
 MODES: tuple[str, ...] = ("pose", "position", "orientation")
+#: What the distinct solutions can be ranked by (:mod:`app.kinematics.ik.ranking`).
+RANK_BY: tuple[str, ...] = ("seed_distance", "manipulability", "clearance")
 #: Task rows of each mode in e = [e_p; e_R].
 MODE_ROWS = {"pose": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "orientation": (3, 4, 5)}
 
@@ -69,6 +71,10 @@ class IKOptions:
     group
         A planning group (:mod:`app.kinematics.groups`): only its joints among those that
         move the frame are active, and the default frame is its tip.
+    rank_by
+        Order of the distinct solutions (one per branch, :mod:`app.kinematics.ik.ranking`):
+        ``seed_distance`` (smallest first), ``manipulability`` or ``clearance`` (largest
+        first; needs obstacles).
     """
 
     frame: str | None = None
@@ -80,11 +86,16 @@ class IKOptions:
     num_solutions: int = 1
     analytic: bool = True
     group: str | None = None
+    rank_by: str = "seed_distance"
 
     def __post_init__(self) -> None:
         mode = self.mode
         if mode not in MODE_ROWS:
             raise InvalidInputError(f"unknown mode {mode!r}; use one of {', '.join(MODES)}", "mode")
+        if self.rank_by not in RANK_BY:
+            raise InvalidInputError(
+                f"unknown {self.rank_by!r}; use one of {', '.join(RANK_BY)}", "rank_by"
+            )
         if self.num_solutions < 1:
             raise InvalidInputError("must be at least 1", "num_solutions")
         if not self.timeout_ms > 0.0:

@@ -22,9 +22,10 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, InvalidInputError
+from app.kinematics.ik.failure import classify
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
-from app.kinematics.models import RobotModel
+from app.kinematics.ik.ranking import Grouping, joint_distance, representatives
 
 #: Two solutions are distinct when some joint differs by more than this (rad or m).
 DISTINCT = 1e-3
@@ -39,11 +40,17 @@ _TWO_PI = 2.0 * math.pi
 
 @dataclass(slots=True)
 class IKSolution:
-    """One verified solution: wire configuration and its errors against the target."""
+    """One verified solution: wire configuration and its errors against the target; once
+    answered, its branch, seed distance, manipulability and clearance
+    (:mod:`app.kinematics.ik.ranking`)."""
 
     q: np.ndarray
     position_error: float
     orientation_error: float
+    branch: str | None = None
+    seed_distance: float = 0.0
+    manipulability: float = 0.0
+    clearance: float | None = None
 
 
 @dataclass(slots=True)
@@ -51,9 +58,11 @@ class IKResult:
     """Outcome of :func:`solve`.
 
     ``q`` is the best configuration (the first solution, or the lowest-error iterate when
-    nothing converged); ``solutions`` are distinct verified solutions sorted by distance to
-    the seed. ``iterations`` counts Jacobian evaluations over all attempts, ``restarts`` the
-    random jumps, ``method`` is ``analytic``, ``numeric`` or ``analytic+numeric``.
+    nothing converged); ``solutions`` are verified solutions, one per branch, ranked by the
+    options' ``rank_by`` (:mod:`app.kinematics.ik.ranking`). ``iterations`` counts Jacobian
+    evaluations over all attempts, ``restarts`` the random jumps, ``method`` is
+    ``analytic``, ``numeric`` or ``analytic+numeric``. A failure has a ``reason`` and a
+    ``detail`` sentence (:mod:`app.kinematics.ik.failure`); both are None on success.
     """
 
     success: bool
@@ -66,6 +75,8 @@ class IKResult:
     restarts: int = 0
     solve_time_ms: float = 0.0
     method: str = "numeric"
+    reason: str | None = None
+    detail: str | None = None
 
 
 def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
@@ -78,15 +89,6 @@ def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
 def wrap_angle(x: np.ndarray) -> np.ndarray:
     """Angles wrapped to [−π, π)."""
     return (x + math.pi) % _TWO_PI - math.pi
-
-
-def joint_distance(robot: RobotModel, a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Per-joint |a − b| on the wire, continuous joints measured around the circle."""
-    d = np.abs(a - b)
-    if robot.has_continuous:
-        c = robot._cont_wire
-        d[c] = np.abs(wrap_angle(a[c] - b[c]))
-    return d
 
 
 class Search:
@@ -104,6 +106,8 @@ class Search:
     rng
         Random generator for the restarts after the nearest samples (default: the chain's
         fixed table in order, so answers are reproducible).
+    clearance
+        Optional ``q ↦`` robot–obstacle distance (m), reported with each answered solution.
     """
 
     def __init__(
@@ -113,8 +117,10 @@ class Search:
         accept: Callable[[np.ndarray], bool] | None = None,
         cancel: threading.Event | None = None,
         rng: np.random.Generator | None = None,
+        clearance: Callable[[np.ndarray], float] | None = None,
     ) -> None:
         task, options = problem.task, problem.options
+        self.options = options
         self.robot, self.ch, self.target = problem.robot, problem.chain, problem.target
         self.q_seed = problem.seed
         self.rows, self.sw = task.rows, task.sw
@@ -125,7 +131,12 @@ class Search:
         self.cancel = cancel
         self.rng = rng
         self.wanted = options.num_solutions
+        self.clearance = clearance
         self.solutions: list[IKSolution] = []
+        #: Branches of the solutions (only needed to count them when several are wanted).
+        self.grouping = Grouping(self.robot, self.ch) if self.wanted > 1 else None
+        self.rejected = 0  # solutions ``accept`` refused
+        self.outside_limits: str | None = None  # the first target reached outside the limits
         self.iterations = 0
         self.restarts = 0
         self.timed_out = False
@@ -138,7 +149,10 @@ class Search:
 
     # --------------------------------------------------------------- verification
     def done(self) -> bool:
-        return len(self.solutions) >= self.wanted
+        """Whether ``wanted`` distinct branches (one solution when one is wanted) are found."""
+        if self.grouping is None:
+            return len(self.solutions) >= self.wanted
+        return self.grouping.count >= self.wanted
 
     def wire(self, qa: np.ndarray) -> np.ndarray:
         """Full wire configuration: the seed with the active joints replaced."""
@@ -154,6 +168,8 @@ class Search:
             c = robot._cont_wire
             q[c] = wrap_angle(q[c])
         if (q < robot.lower).any() or (q > robot.upper).any():
+            if self.outside_limits is None:
+                self._note_outside_limits(q)
             return False
         model, data = robot.model, robot.data
         pin.forwardKinematics(model, data, robot.to_pin(q))
@@ -180,9 +196,33 @@ class Search:
             if joint_distance(robot, s.q, q).max() <= DISTINCT:
                 return False
         if self.accept is not None and not self.accept(q):
+            self.rejected += 1
             return False
         self.solutions.append(IKSolution(q, ep_full, er_full))
+        if self.grouping is not None:
+            self.grouping.add(q)
         return True
+
+    def _note_outside_limits(self, q: np.ndarray) -> None:
+        """Record (for ``reason: joint_limits``) a candidate outside the limits that reaches
+        the target within the tolerances."""
+        robot = self.robot
+        if not np.isfinite(q).all():
+            return
+        model, data = robot.model, robot.data
+        pin.forwardKinematics(model, data, robot.to_pin(q))
+        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        e = np.concatenate(
+            (T.translation - self.target.translation, pin.log3(T.rotation @ self.target.rotation.T))
+        )
+        ep, er = self._checked(e)
+        if ep <= self.tol_p and er <= self.tol_r:
+            bad = [
+                f"{j.name} = {v:.6g} outside [{j.lower:.6g}, {j.upper:.6g}]"
+                for j, v, lo, hi in zip(robot.joints, q, robot.lower, robot.upper, strict=True)
+                if v < lo or v > hi
+            ]
+            self.outside_limits = "; ".join(bad)
 
     def _checked(self, e: np.ndarray) -> tuple[float, float]:
         """Position and orientation errors over the checked (positive-weight) rows."""
@@ -250,13 +290,19 @@ class Search:
 
     # ------------------------------------------------------------------- result
     def result(self, method: str, t_start: float) -> IKResult:
-        """The outcome: verified solutions sorted by distance to the seed, or the best iterate."""
+        """The outcome: one verified solution per branch, ranked (:mod:`.ranking`), or the
+        best iterate with the reason of the failure (:mod:`.failure`)."""
         robot = self.robot
-        sols = self.solutions
-        if len(sols) > 1:
-            sols = sorted(
-                sols, key=lambda s: float(np.linalg.norm(joint_distance(robot, s.q, self.q_seed)))
-            )
+        sols = representatives(
+            robot,
+            self.ch,
+            self.solutions,
+            self.grouping,
+            self.q_seed,
+            rank_by=self.options.rank_by,
+            clearance=self.clearance,
+            wanted=self.wanted,
+        )
         elapsed = (time.perf_counter() - t_start) * 1e3
         if sols:
             best = sols[0]
@@ -272,6 +318,28 @@ class Search:
                 elapsed,
                 method,
             )
+        q, ep, er = self.best_iterate()
+        reason, detail = classify(self, q, ep, er, self.options.max_iterations)
+        status: Status = "timeout" if self.timed_out else "not_converged"
+        return IKResult(
+            False,
+            status,
+            q,
+            ep,
+            er,
+            [],
+            self.iterations,
+            self.restarts,
+            (time.perf_counter() - t_start) * 1e3,
+            method,
+            reason,
+            detail,
+        )
+
+    def best_iterate(self) -> tuple[np.ndarray, float, float]:
+        """The lowest-error configuration met (wire, continuous joints wrapped) and its
+        position (m) and orientation (rad) errors."""
+        robot = self.robot
         q = self.best_q
         if robot.has_continuous:
             c = robot._cont_wire
@@ -289,7 +357,4 @@ class Search:
                 "the robot's dimensions overflow double precision",
                 "robot_id",
             )
-        status: Status = "timeout" if self.timed_out else "not_converged"
-        return IKResult(
-            False, status, q, ep, er, [], self.iterations, self.restarts, elapsed, method
-        )
+        return q, ep, er

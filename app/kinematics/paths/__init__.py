@@ -5,9 +5,10 @@ The package, one concept per module:
 - :mod:`.segments`: the Cartesian path itself (lines, arcs, explicit waypoints), its
   interpolation at ``max_step`` (position linear, orientation by slerp) and the pose at any
   path parameter;
-- :mod:`.follow`: IK at each point seeded by the previous solution, the joint-step and
-  branch guards, densification to the deviation bound, the typed failure of the first point
-  that cannot be reached;
+- :mod:`.follow`: IK at each point seeded by the previous solution, step halving,
+  densification to the deviation bound, the points reached;
+- :mod:`.failures`: the joint-step, branch and collision guards inside the solver, and the
+  typed failure (``reason``, ``detail``) of the first point that cannot be reached;
 - :mod:`.timing`: time-optimal parameterization of the joint path (toppra) under velocity
   and acceleration limits.
 """

@@ -11,12 +11,13 @@
 - ``branch``: the only solutions within the joint step are on another branch;
 - ``joint_step``: every solution found moves some joint more than ``max_joint_step``;
 - ``singular``: instead of ``joint_step`` or ``branch`` when the smallest singular value of
-  the frame Jacobian (task rows, moving joints) at the last point reached is below
+  the frame Jacobian (task rows, moving joints) at the last point reached (for ``branch``:
+  or half-way to the refused solution, where the flags change sign) is below
   :data:`SINGULAR_SIGMA`: the continuation needs unbounded joint speed there;
-- ``joint_limits``: no acceptable solution, and the linearised step from the last point
+- ``joint_limits``: every solution found jumps, and the linearised step from the last point
   towards the waypoint, Δq = J⁺·e, takes a joint outside its limits;
-- ``timeout``: no solution at all and the IK budget ran out;
-- ``unreachable``: no solution at all within the budget (outside the workspace).
+- no solution at all: the solver's own ``reason`` (:mod:`app.kinematics.ik.failure`:
+  ``unreachable``, ``joint_limits``, ``singular`` or ``timeout``).
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ import pinocchio as pin
 from app.kinematics.fk import frame_pose
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
-from app.kinematics.ik.search import IKResult, joint_distance
+from app.kinematics.ik.search import IKResult, joint_distance, wrap_angle
 from app.kinematics.jacobian import frame_jacobian_by_id
 from app.kinematics.models import RobotModel
 
@@ -68,7 +69,10 @@ def residuals(T: pin.SE3, target: pin.SE3, task: Task) -> tuple[float, float]:
     """Position (m) and rotation (rad) error of ``T`` against ``target`` on the components the
     task checks (0 for one it does not)."""
     dp = T.translation - target.translation
-    e = np.concatenate((dp, pin.log3(T.rotation @ target.rotation.T)))
+    phi = pin.log3(T.rotation @ target.rotation.T)
+    if task.full_pose:
+        return math.hypot(*dp), math.hypot(*phi)
+    e = np.concatenate((dp, phi))
     r = task.rows
     ep = float(np.linalg.norm(e[r[r < 3]])) if task.check_pos else 0.0
     er = float(np.linalg.norm(e[r[r >= 3]])) if task.check_rot else 0.0
@@ -204,6 +208,17 @@ def classify(
         detail = f"every solution found for {where} within max_joint_step is in collision"
     elif guard.other_branches:
         lab, q = guard.other_branches[0]
+        # The flags change sign where the arm is singular: look half-way to the solution too.
+        dq = q - last.q
+        if robot.has_continuous:
+            dq[robot._cont_wire] = wrap_angle(dq[robot._cont_wire])
+        sigma_mid = smallest_singular_value(robot, chain, task, last.q + 0.5 * dq)
+        singular = singular or sigma_mid < SINGULAR_SIGMA
+        near = (
+            f"the smallest singular value of the Jacobian between the last point reached "
+            f"(s = {last.s:.4f}) and that solution is {min(sigma, sigma_mid):.3g} < "
+            f"{SINGULAR_SIGMA:g}"
+        )
         reason = "singular" if singular else "branch"
         detail = (
             f"the solutions found for {where} within max_joint_step are on branch {lab!r}, "
@@ -223,18 +238,15 @@ def classify(
             reason, detail = "joint_limits", f"{hit} ({moved})"
         else:
             reason, detail = "joint_step", moved
+    elif res.reason is not None:  # no solution at all: the solver's own reason
+        reason = res.reason
+        detail = f"no solution of {where} found: {res.detail}"
     else:
-        hit = _limit_hit(robot, chain, task, last.q, target)
-        if res.status == "timeout":
-            reason = "timeout"
-            detail = f"the IK budget ran out before a solution of {where} was found"
-        elif hit is not None:
-            reason, detail = "joint_limits", f"no solution of {where} found: {hit}"
-        else:
-            detail = (
-                f"no solution of {where} found: the closest configuration met is "
-                f"{res.position_error:.3g} m and {res.orientation_error:.3g} rad away"
-            )
+        reason = "timeout" if res.status == "timeout" else "unreachable"
+        detail = (
+            f"no solution of {where} found: the closest configuration met is "
+            f"{res.position_error:.3g} m and {res.orientation_error:.3g} rad away"
+        )
     ep, er = residuals(frame_pose(robot, q, chain.frame_id), target, task)
     if not (math.isfinite(ep) and math.isfinite(er)):
         ep, er = res.position_error, res.orientation_error

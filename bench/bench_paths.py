@@ -1,0 +1,118 @@
+"""Cartesian path benchmark: :func:`app.kinematics.paths.follow.follow` on random lines.
+
+Workload (:mod:`bench._lines`): per robot, N straight tool lines of 0.1–0.5 m with the
+orientation fixed, inside the reachable set, from random start configurations (fixed seed).
+Each line is sampled at ``max_step`` = (0.01 m, 0.05 rad); ``max_joint_step`` = 0.1 rad;
+IK tolerance 1e-5 m / 1e-5 rad, at most 200 iterations and 50 ms per solve.
+
+Reported per robot:
+
+- completed lines: ``follow`` (guards, bisection, densification) against the naive
+  baseline "``ik.solve`` per waypoint seeded by the previous solution, no guards", which
+  counts as complete only when every waypoint is solved and no joint moves more than
+  ``max_joint_step`` between consecutive waypoints;
+- time per point, over the completed lines: ``follow``'s wall time over the points it
+  returned (densified points included), against a single
+  ``ik.solve`` per point on the same poses from a cold seed (the middle of the joint limits,
+  what a client calling POST /ik per point gets), and their ratio (target ≤ 0.5);
+- the failure reasons of ``follow``, and its mean wall time on a line it could not finish
+  (the halved steps and the last full-budget attempt).
+
+Environment: ``DENAVIT_BENCH_PATHS_N`` (lines per robot, default 1000).
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections import Counter
+
+import numpy as np
+
+from app.kinematics import ik
+from app.kinematics.ik.problem import IKOptions
+from app.kinematics.ik.search import joint_distance
+from app.kinematics.models import RobotModel
+from app.kinematics.paths.follow import PathOptions, follow
+from app.kinematics.paths.segments import CartesianPath, Line
+from app.registry import Registry
+from bench._lines import RandomLine, random_lines
+
+ROBOTS = (("ur5", "tool0"), ("panda", "panda_hand"))
+OPTIONS = PathOptions(max_step=(0.01, 0.05), max_joint_step=0.1)
+SEED = 2026
+
+
+def naive(robot: RobotModel, line: RandomLine, opts: IKOptions) -> bool:
+    """IK per waypoint seeded by the previous solution; complete when every waypoint is
+    solved and no joint jumps more than ``max_joint_step``."""
+    path = CartesianPath.from_segments(line.start, [Line(line.end)])
+    poses, _ = path.sample(OPTIONS.max_step)
+    q = line.q0
+    for T in poses[1:]:
+        res = ik.solve(robot, T, opts, seed=q)
+        if not res.success or joint_distance(robot, res.q, q).max() > OPTIONS.max_joint_step:
+            return False
+        q = res.q
+    return True
+
+
+def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
+    robot = reg.get(rid)
+    opts = IKOptions(frame=frame, max_iterations=200, timeout_ms=50.0)
+    lines = random_lines(robot, frame, n, SEED)
+    done = naive_done = points = 0
+    t_follow = t_cold = t_failed = 0.0
+    reasons: Counter[str] = Counter()
+    for i, line in enumerate(lines):
+        path = CartesianPath.from_segments(line.start, [Line(line.end)])
+        t0 = time.perf_counter()
+        res = follow(robot, line.q0, path, opts, OPTIONS, rng=np.random.default_rng(i))
+        dt = time.perf_counter() - t0
+        naive_done += naive(robot, line, opts)
+        if res.failure is not None:
+            reasons[res.failure.reason] += 1
+            t_failed += dt
+            continue
+        done += 1
+        t_follow += dt
+        pts = res.points[1:]
+        points += len(pts)
+        t0 = time.perf_counter()
+        for p in pts:
+            ik.solve(robot, path.pose_at(p.s), opts)
+        t_cold += time.perf_counter() - t0
+    return {
+        "robot": rid,
+        "frame": frame,
+        "lines": n,
+        "follow": done / n,
+        "naive": naive_done / n,
+        "follow_ms": 1e3 * t_follow / max(points, 1),
+        "cold_ms": 1e3 * t_cold / max(points, 1),
+        "points": points,
+        "failed_ms": 1e3 * t_failed / max(n - done, 1),
+        "reasons": ", ".join(f"{k} {v}" for k, v in reasons.most_common()),
+    }
+
+
+def main() -> None:
+    n = int(os.environ.get("DENAVIT_BENCH_PATHS_N", "1000"))
+    reg = Registry()
+    print(f"machine: {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
+    print(f"\n### {n} random lines per robot (0.1–0.5 m, orientation fixed)\n")
+    print("| robot | frame | lines completed, follow | lines completed, naive | points "
+          "| follow (ms per point) | cold single IK (ms per point) | ratio "
+          "| follow's failures | ms per failed line |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for rid, frame in ROBOTS:
+        r = run(reg, rid, frame, n)
+        print(f"| {r['robot']} | {r['frame']} | {100 * r['follow']:.1f}% | "
+              f"{100 * r['naive']:.1f}% | {r['points']} | {r['follow_ms']:.3f} | "
+              f"{r['cold_ms']:.3f} | {r['follow_ms'] / r['cold_ms']:.2f} | {r['reasons']} "
+              f"| {r['failed_ms']:.1f} |",
+              flush=True)  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
