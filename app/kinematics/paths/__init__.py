@@ -9,5 +9,6 @@ The package, one concept per module:
   branch guards, densification to the deviation bound, the typed failure of the first point
   that cannot be reached;
 - :mod:`.timing`: time-optimal parameterization of the joint path (toppra) under velocity
-  and acceleration limits.
+  and acceleration limits, verified on the output;
+- :mod:`.limits`: those limits, from the robot's description or per joint.
 """
