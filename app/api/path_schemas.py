@@ -8,6 +8,7 @@ from pydantic import BaseModel, Field
 
 from app.api.ik_schemas import IKTaskIn, Positive, Target
 from app.api.schemas import Finite, Schema
+from app.api.timing_schemas import TimingIn, TimingOut
 
 #: Why a path stops (the first point that cannot be reached).
 FailureReason = Literal[
@@ -88,6 +89,12 @@ class PathRequest(IKTaskIn):
         '"shoulder_left/elbow_up/wrist_noflip"); the start must be on it. Without it, the '
         "path keeps the start's branch anyway.",
     )
+    timing: TimingIn | None = Field(
+        None,
+        description="Time-parameterize the joint path (time-optimal under joint velocity and "
+        "acceleration limits, at rest at both ends): the answer's `timing` holds the time, "
+        "velocity and acceleration of every point.",
+    )
 
 
 class PathPointOut(BaseModel):
@@ -126,3 +133,7 @@ class PathResponse(BaseModel):
     iterations: int = Field(description="Solver iterations over the whole path.")
     solve_time_ms: float
     solver_version: str
+    timing: TimingOut | None = Field(
+        description="With the request's `timing`: times, velocities and accelerations of the "
+        "points (null otherwise)."
+    )

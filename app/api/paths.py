@@ -24,8 +24,9 @@ from app.api.offload import offload_cancellable
 from app.api.path_schemas import ArcSegment, PathRequest, PathResponse
 from app.api.responses import ORJSONResponse
 from app.api.schemas import RobotId
+from app.api.timing_schemas import TimingIn, timing_of
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.groups import group
+from app.kinematics.groups import Group, group
 from app.kinematics.ik import SOLVER_VERSION
 from app.kinematics.ik.problem import IKOptions, group_seed
 from app.kinematics.models import RobotModel
@@ -87,6 +88,8 @@ def _follow(
     options: PathOptions,
     collisions: Collisions | None,
     rng: np.random.Generator | None,
+    timing: TimingIn | None,
+    grp: Group | None,
     cancel: threading.Event | None = None,
 ) -> dict:
     res = follow(
@@ -132,7 +135,18 @@ def _follow(
         "iterations": res.iterations,
         "solve_time_ms": res.solve_time_ms,
         "solver_version": SOLVER_VERSION,
+        "timing": None if timing is None else _timing(robot, res.points, timing, grp),
     }
+
+
+def _timing(robot: RobotModel, points: list, timing: TimingIn, grp: Group | None) -> dict:
+    """The timing of the accepted points: continuous joints unwrapped (the path crosses ±π
+    as a small move, not a 2π one), limit lists in the group's joints when there is one."""
+    qs = np.array([p.q for p in points])
+    if robot.has_continuous:
+        c = robot._cont_wire
+        qs[:, c] = np.unwrap(qs[:, c], axis=0)
+    return timing_of(robot, qs, timing, None if grp is None else grp.indices)
 
 
 @router.post(
@@ -169,7 +183,8 @@ async def solve_ik_path(
         branch=body.branch,
     )
     collisions = collisions_of(request, body)
-    start = group_seed(robot, group(robot, body.group), body.start, "start")
+    grp = group(robot, body.group)
+    start = group_seed(robot, grp, body.start, "start")
     assert ik_options.frame is not None  # options_of resolves the default frame
     path = _path(body, _start_pose(robot, start, ik_options.frame))
     points = len(path.sample(options.max_step)[0])
@@ -183,6 +198,16 @@ async def solve_ik_path(
             "max_step",
         )
     out = await offload_cancellable(
-        request, _follow, robot, start, path, ik_options, options, collisions, rng_of(body)
+        request,
+        _follow,
+        robot,
+        start,
+        path,
+        ik_options,
+        options,
+        collisions,
+        rng_of(body),
+        body.timing,
+        grp,
     )
     return ORJSONResponse(out)

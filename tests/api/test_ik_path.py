@@ -3,11 +3,13 @@ the failure contract, the branch guard, determinism across workers, the error co
 
 from __future__ import annotations
 
+import io
 import math
 
 import httpx
 import numpy as np
 import pytest
+import yourdfpy
 from scipy.spatial.transform import Rotation
 
 from app.kinematics.collision import collision_filter
@@ -269,3 +271,48 @@ def test_collinear_arc_and_too_many_points_are_422(client, registry) -> None:
 
 def test_unknown_robot_is_404(client) -> None:
     problem(client.post("/robots/nope/ik/path", json=ISSUE_BODY), 404)
+
+
+def test_timing_respects_the_limits_at_every_point(client, registry) -> None:
+    """UR5 line with timing: times from 0, increasing; every point's velocity within the
+    URDF's limits (read by yourdfpy) and acceleration within the given ones; the mean
+    velocity over every interval within the limit too; at rest at both ends."""
+    q0 = [0.2, -1.2, 1.4, -1.6, -1.5, 0.3]
+    T0 = _pose(registry, "ur5", q0, "tool0")
+    to = {"position": (T0[:3, 3] + [0.1, 0.2, -0.1]).tolist(), "orientation": _quat(T0)}
+    acc = [2.0, 2.0, 3.0, 4.0, 4.0, 4.0]
+    body = {
+        "start": q0,
+        "segments": [{"type": "line", "to": to}],
+        "timing": {"acceleration_limits": acc},
+        **BUDGET,
+    }
+    out = client.post("/robots/ur5/ik/path", json=body).json()
+    assert out["fraction"] == 1.0, out["failure"]
+    tm = out["timing"]
+    urdf = yourdfpy.URDF.load(
+        io.BytesIO(registry.get("ur5").urdf_text.encode()), load_meshes=False,
+        build_collision_scene_graph=False, load_collision_meshes=False,
+    )  # fmt: skip
+    vmax = np.array([urdf.joint_map[j].limit.velocity for j in out["joint_names"]])
+    t = np.array(tm["t"])
+    q = np.array([p["q"] for p in out["points"]])
+    v, a = np.array(tm["velocities"]), np.array(tm["accelerations"])
+    assert t.shape == (len(q),) and t[0] == 0.0 and np.all(np.diff(t) >= 0.0)
+    assert tm["duration"] == t[-1] > 0.0
+    assert np.all(np.abs(v) <= vmax * (1 + 1e-9))
+    assert np.all(np.abs(a) <= np.array(acc) * (1 + 1e-9))
+    dt = np.diff(t)
+    moving = dt > 0
+    mean_v = np.abs(np.diff(q, axis=0)[moving]) / dt[moving, None]
+    assert np.all(mean_v <= vmax * (1 + 1e-9))
+    assert np.abs(v[0]).max() == 0.0 and np.abs(v[-1]).max() <= 1e-9
+    # Time-optimal, not merely slow: some joint gets near one of its limits.
+    assert max((np.abs(v) / vmax).max(), (np.abs(a) / acc).max()) >= 0.95
+
+
+def test_timing_errors_name_the_field(client) -> None:
+    body = {**ISSUE_BODY, "timing": {"acceleration_limits": [1.0, 2.0]}}
+    problem(client.post("/robots/ur5/ik/path", json=body), 422, "timing.acceleration_limits")
+    body = {**ISSUE_BODY, "timing": {"acceleration_limits": {"elbow": 1.0}}}
+    problem(client.post("/robots/ur5/ik/path", json=body), 422, "timing.acceleration_limits.elbow")

@@ -10,5 +10,6 @@ The package, one concept per module:
 - :mod:`.failures`: the joint-step, branch and collision guards inside the solver, and the
   typed failure (``reason``, ``detail``) of the first point that cannot be reached;
 - :mod:`.timing`: time-optimal parameterization of the joint path (toppra) under velocity
-  and acceleration limits.
+  and acceleration limits, verified on the output;
+- :mod:`.limits`: those limits, from the robot's description or per joint.
 """
