@@ -30,7 +30,7 @@ from app.kinematics.groups import Group, group
 from app.kinematics.ik import SOLVER_VERSION
 from app.kinematics.ik.problem import IKOptions, group_seed
 from app.kinematics.models import RobotModel
-from app.kinematics.paths.follow import PathOptions, follow
+from app.kinematics.paths.follow import PathOptions, follow, start_pose
 from app.kinematics.paths.segments import Arc, CartesianPath, Line
 from app.metrics import record_ik
 
@@ -71,13 +71,6 @@ def _path(body: PathRequest, start: pin.SE3) -> CartesianPath:
             previous = _pose(seg.to, mode, previous, f"segments.{i}.to")
             segments.append(Line(previous))
     return CartesianPath.from_segments(start, segments)
-
-
-def _start_pose(robot: RobotModel, q: np.ndarray, frame: str) -> pin.SE3:
-    """The frame's placement (root frame) at the wire configuration ``q``."""
-    data = robot.model.createData()
-    pin.framesForwardKinematics(robot.model, data, robot.to_pin(q))
-    return data.oMf[robot.frame_id(frame)].copy()
 
 
 def _follow(
@@ -185,8 +178,7 @@ async def solve_ik_path(
     collisions = collisions_of(request, body)
     grp = group(robot, body.group)
     start = group_seed(robot, grp, body.start, "start")
-    assert ik_options.frame is not None  # options_of resolves the default frame
-    path = _path(body, _start_pose(robot, start, ik_options.frame))
+    path = _path(body, start_pose(robot, start, ik_options))
     points = len(path.sample(options.max_step)[0])
     total_s = points * body.timeout_ms * 1e-3
     cap_s = request.app.state.settings.ik_max_request_s
