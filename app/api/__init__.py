@@ -10,6 +10,7 @@ from app.api import (
     ik,
     jacobian,
     packages,
+    paths,
     reachability,
     robots,
     scenes,
@@ -28,5 +29,6 @@ ROUTERS = [
     collisions.router,
     scenes.router,
     ik.router,
+    paths.router,
     velocity.router,
 ]
