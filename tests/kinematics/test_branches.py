@@ -64,8 +64,11 @@ def _ur5_reference_flags(robot: RobotModel, q: np.ndarray) -> tuple[str, str, st
     """The textbook flags of a UR5 configuration, or None near a branch boundary.
 
     shoulder: right when raising joint 2 raises the wrist point (finite difference, world z
-    = axis 1); elbow: up when the elbow (axis 3) lies above the shoulder–wrist line (axes 2
-    and 4) in the arm plane; wrist: noflip when sin q5 > 0.
+    = axis 1); elbow: up when the turn from the upper arm (axis 2 → axis 3) to the forearm
+    (axis 3 → axis 4) about axis 2, in the arm plane, has the opposite sign of that rise
+    (for a right shoulder: a clockwise turn about axis 2); both change sign only at a
+    singularity (the elbow stretched or folded, the wrist point above the shoulder);
+    wrist: noflip when sin q5 > 0.
     """
     h = 1e-6
     dq = np.zeros(6)
@@ -75,14 +78,12 @@ def _ur5_reference_flags(robot: RobotModel, q: np.ndarray) -> tuple[str, str, st
     n = Ts[:3, :3] @ np.array(robot.joints[1].axis)
     P = np.eye(3) - np.outer(n, n)
     s, e, t = P @ Ts[:3, 3], P @ Te[:3, 3], P @ Tt[:3, 3]
-    u = (t - s) / np.linalg.norm(t - s)
-    perp = (e - s) - ((e - s) @ u) * u
-    height = perp[2]
-    if abs(dz) < 1e-3 or abs(height) < 1e-3 or abs(math.sin(q[4])) < 1e-3:
+    turn = float(n @ np.cross(e - s, t - e))
+    if abs(dz) < 1e-3 or abs(turn) < 1e-3 or abs(math.sin(q[4])) < 1e-3:
         return None
     return (
         "shoulder_right" if dz > 0 else "shoulder_left",
-        "elbow_up" if height > 0 else "elbow_down",
+        "elbow_up" if turn * dz < 0 else "elbow_down",
         "wrist_noflip" if math.sin(q[4]) > 0 else "wrist_flip",
     )
 
@@ -355,3 +356,35 @@ def test_success_has_no_reason(registry) -> None:
     robot = registry.get("ur5")
     res = ik.solve(robot, se3(reference_pose(robot, UR5_Q, "tool0")), IKOptions(frame="tool0"))
     assert res.success and res.reason is None and res.detail is None
+
+
+@pytest.mark.parametrize("robot_id", ["ur5", "puma560"])
+def test_labels_change_only_at_singularities(registry, robot_id) -> None:
+    """Along short joint-space segments sampled finely, the label changes only where the
+    frame Jacobian's smallest singular value dips near 0 in between: a path that keeps away
+    from singularities keeps its whole label (the UR5 configuration is where an elbow flag
+    taken on the side of axis 4, not of the wrist point, flipped at σ_min ≈ 0.03)."""
+    robot = registry.get(robot_id)
+    frame = robot.ee_frame
+    ch = ik_chain(robot, frame)
+    rng = np.random.default_rng(5)
+    starts = [np.array([-2.006, 2.530, -2.049, 1.993, -3.717, -0.736])] if robot_id == "ur5" else []
+    starts += [random_q(robot, rng) for _ in range(60)]
+    fid = robot.frame_id(frame)
+    data = robot.model.createData()
+    changes = 0
+    for q0 in starts:
+        q1 = np.clip(q0 + rng.uniform(-0.4, 0.4, 6), robot.lower, robot.upper)
+        labels, sigmas = [], []
+        for u in np.linspace(0.0, 1.0, 81):
+            q = q0 + u * (q1 - q0)
+            labels.append(branch_label(robot, ch, q))
+            J = pin.computeFrameJacobian(
+                robot.model, data, robot.to_pin(q), fid, pin.LOCAL_WORLD_ALIGNED
+            )
+            sigmas.append(np.linalg.svd(J, compute_uv=False)[-1])
+        for i in range(len(labels) - 1):
+            if labels[i] != labels[i + 1]:
+                changes += 1
+                assert min(sigmas[max(0, i - 1) : i + 3]) < 0.02, (q0, q1, i, labels[i : i + 2])
+    assert changes > 0  # the segments do cross branch boundaries (the test can fail)

@@ -23,13 +23,21 @@ once at q = 0.
   different shoulder flags.
 - elbow (joints 2 and 3 revolute with parallel axes): with e = o_3 the elbow and t the end
   of the 2-link arm of axes 2 and 3 (spherical wrist: t = w; UR type: t = o_4, a point of
-  axis 4, parallel to axis 2), ``up`` when the elbow lies on the +z_1 side of the line from
-  the shoulder o_2 to t in the arm's plane (normal z_2), i.e. when
-  [z_2, e − o_2, t − e] · [z_1, z_2, t − o_2] < 0 (the turn from upper arm to forearm about
-  z_2, times the side of the plane of z_1 and z_2 on which t lies). Each factor uses z_2
-  once, so the flag does not depend on the direction of z_2. The two elbow solutions of a
-  2-link arm are mirror images across the line from o_2 to t, so they get different flags.
-  No elbow flag when joint 2 or 3 is prismatic (the Stanford arm).
+  axis 4, parallel to axis 2), ``up`` when [z_2, e − o_2, t − e] · [z_1, z_2, w − o_2] < 0:
+  the turn from upper arm to forearm about z_2, times the shoulder's factor (the side of
+  the plane of z_1 and z_2 on which the wrist point lies). For a spherical wrist (t = w) this
+  is the elbow on the +z_1 side of the line from the shoulder o_2 to t in the arm's plane
+  (the textbook's ELBOW relative to ARM). Each factor uses z_2 once, so the flag does not
+  depend on the direction of z_2. The two elbow solutions of a 2-link arm are mirror images
+  across the line from o_2 to t, so they get different flags. No elbow flag when joint 2
+  or 3 is prismatic (the Stanford arm).
+
+  The first factor vanishes only at the elbow singularity (axes 2, 3 and 4 coplanar, or
+  o_2, o_3, w collinear), the second only at the shoulder singularity (the wrist point in
+  the plane of axes 1 and 2), so the flag, like the other two, changes only where the arm is
+  singular: a continuous motion away from singularities keeps its whole label (the path
+  follower relies on it). (Taking the side of t = o_4 instead of w would flip the UR's
+  elbow flag where o_4 crosses that plane, at configurations that are not singular.)
 - wrist: ``noflip`` when [z_4, z_6, z_5] > 0, ``flip`` otherwise. For orthogonal
   consecutive axes this is ±sin(q_5 + β) (β the zero offset): the two wrist solutions of the
   same shoulder and elbow (q_5 and its mirror, the PUMA's (q_4 + π, −q_5, q_6 + π)) have
@@ -180,8 +188,7 @@ def branch_label(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None
     if form.elbow:
         t = o[3] if form.tip_axis4 else w
         turn = _triple(z[1], (o[2] - o[1]).tolist(), (t - o[2]).tolist())
-        side = _triple(z[0], z[1], (t - o[1]).tolist())
-        parts.append("elbow_up" if turn * side < 0.0 else "elbow_down")
+        parts.append("elbow_up" if turn * shoulder < 0.0 else "elbow_down")
     noflip = _triple(z[3], z[5], z[4]) >= 0.0
     parts.append("wrist_noflip" if noflip else "wrist_flip")
     return "/".join(parts)

@@ -235,16 +235,19 @@ def target_placement(
 
 
 def seed_configuration(
-    robot: RobotModel, seed: Sequence[float] | np.ndarray | Mapping[str, float] | None
+    robot: RobotModel,
+    seed: Sequence[float] | np.ndarray | Mapping[str, float] | None,
+    field: str = "seed",
 ) -> np.ndarray:
     """Wire seed from a list or a joint → value map (others: middle of their limits; mimic
     followers checked against their leader, :meth:`RobotModel.apply_joint_map`); default the
-    middle of the joint limits. Names ``seed``, ``seed.4``, ``seed.<joint>``."""
+    middle of the joint limits. Names ``field``, ``field.4``, ``field.<joint>`` (``seed``;
+    a path's ``start``)."""
     if seed is None:
         return robot.mid_range()
     if isinstance(seed, Mapping):
-        return robot.apply_joint_map(robot.mid_range(), seed, "seed")
-    return robot.configuration(seed, field="seed")
+        return robot.apply_joint_map(robot.mid_range(), seed, field)
+    return robot.configuration(seed, field=field)
 
 
 def group_seed(
@@ -263,4 +266,4 @@ def group_seed(
         return state_configuration(robot, seed, grp, robot.mid_range(), field)
     if grp is not None and seed is not None and not isinstance(seed, Mapping):
         return expand(robot, grp, seed, robot.mid_range(), field)
-    return seed_configuration(robot, seed)
+    return seed_configuration(robot, seed, field)
