@@ -198,8 +198,7 @@ def solve(
     search = Search(
         problem, accept=accept, cancel=cancel, rng=rng, clearance=clearance, annotate=annotate
     )
-    axes = task.rows[task.rows < 3] if task.check_pos else task.rows[:0]
-    far = unreachable_detail(robot, ch, q_seed, target, axes, search.tol_p)
+    far = unreachable_detail(robot, ch, q_seed, target, task, search.tol_p)
     if far is not None:
         # No solution exists: a short best-effort descent towards the target, then the reason.
         cap = min(options.max_iterations or UNREACHABLE_ITERATIONS, UNREACHABLE_ITERATIONS)

@@ -56,6 +56,7 @@ from app.kinematics.models import MAX_JOINT_VALUE
 
 if TYPE_CHECKING:
     from app.kinematics.ik.precompute import IKChain
+    from app.kinematics.ik.problem import Task
     from app.kinematics.ik.search import Search
     from app.kinematics.models import RobotModel
 
@@ -144,20 +145,26 @@ def unreachable_detail(
     ch: IKChain,
     seed: np.ndarray,
     target: pin.SE3,
-    axes: np.ndarray,
+    task: Task,
     tol_p: float,
 ) -> str | None:
-    """A ``detail`` sentence when the target position is beyond the reach bound on the checked
-    position ``axes`` (indices 0–2), else None."""
-    if axes.size == 0:
+    """A ``detail`` sentence when the target position is beyond the reach bound on the
+    position axes the task checks, else None."""
+    if not task.check_pos:
         return None
     bound = reach_bound(robot, ch, seed)
     if bound is None:
         return None
     b, reach = bound
     diff = target.translation - b
-    d = math.hypot(*(float(diff[i]) for i in axes))  # hypot: no overflow of the squares
-    if d <= reach * (1.0 + REACH_SLACK) + tol_p:
+    limit = reach * (1.0 + REACH_SLACK) + tol_p
+    # hypot: no overflow of the squares. The distance over all three axes bounds the one over
+    # the checked axes, so the common case (within reach) needs no row selection.
+    if math.hypot(*diff) <= limit:
+        return None
+    rows = task.rows
+    d = math.hypot(*(float(diff[i]) for i in rows[rows < 3]))
+    if d <= limit:
         return None
     return (
         f"the target is {d:.6g} m from the chain's first joint at {np.round(b, 6).tolist()}, "
