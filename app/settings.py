@@ -105,8 +105,9 @@ class Settings(BaseSettings):
         gt=0,
         le=86400,
         allow_inf_nan=False,
-        description="Cap on an IK batch's total budget, targets × timeout_ms (s): one request "
-        "cannot hold a pool worker longer.",
+        description="Cap on an IK batch's total budget, targets × timeout_ms (s), and on a "
+        "Cartesian path's, points × timeout_ms (also its deadline): one request cannot hold a "
+        "pool worker longer.",
     )
     graceful_timeout_s: int = Field(
         8,
