@@ -60,6 +60,7 @@ def _solve_one(
         rng=rng,
         cancel=cancel,
         clearance=clearance_of(robot, collisions),
+        annotate=True,
     )
     record_ik(res.success)
     return {

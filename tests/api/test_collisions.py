@@ -7,6 +7,7 @@ import math
 import pytest
 
 from tests.helpers import problem
+from tests.kinematics.reference import planar2_elbows
 
 READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
 FOLDED = [0.638, -1.713, -2.25, -2.588, -0.848, 0.027, 2.491, 0.01]
@@ -248,13 +249,8 @@ L1, L2 = 1.0, 0.8  # planar2
 
 
 def _elbows(x: float, y: float) -> list[tuple[float, float]]:
-    """Closed-form planar 2-link IK: θ2 = ±acos c2, θ1 = atan2(y, x) − atan2(l2 s2, l1 + l2 c2)."""
-    c2 = (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)
-    out = []
-    for t2 in (math.acos(c2), -math.acos(c2)):
-        t1 = math.atan2(y, x) - math.atan2(L2 * math.sin(t2), L1 + L2 * math.cos(t2))
-        out.append((t1, t2))
-    return out
+    """Closed-form planar 2-link IK of planar2 (both elbows)."""
+    return planar2_elbows(x, y, L1, L2)
 
 
 def _segment_distance(p, a, b) -> float:

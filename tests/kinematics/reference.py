@@ -90,3 +90,14 @@ def random_configurations(robot: RobotModel, n: int, seed: int = 0) -> np.ndarra
     lo = np.where(np.isfinite(robot.lower), robot.lower, -np.pi)
     hi = np.where(np.isfinite(robot.upper), robot.upper, np.pi)
     return rng.uniform(lo, hi, size=(n, robot.n))
+
+
+def planar2_elbows(x: float, y: float, l1: float, l2: float) -> list[tuple[float, float]]:
+    """Closed-form planar 2-link IK (DOMAIN.md), both elbows (θ2 > 0 first):
+    θ2 = ±acos c2, θ1 = atan2(y, x) − atan2(l2 s2, l1 + l2 c2)."""
+    c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
+    out = []
+    for t2 in (math.acos(c2), -math.acos(c2)):
+        t1 = math.atan2(y, x) - math.atan2(l2 * math.sin(t2), l1 + l2 * math.cos(t2))
+        out.append((t1, t2))
+    return out

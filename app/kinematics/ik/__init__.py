@@ -131,6 +131,7 @@ def solve(
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
     clearance: Callable[[np.ndarray], float] | None = None,
+    annotate: bool = False,
 ) -> IKResult:
     """Joint configurations placing ``options.frame`` at ``target``.
 
@@ -163,6 +164,11 @@ def solve(
         (:func:`~app.kinematics.ik.ranking.clearance_function`): reported with each solution,
         and required by ``options.rank_by == "clearance"`` (else InvalidInputError naming
         ``rank_by``).
+    annotate
+        Label every answered solution with its ``branch`` and ``manipulability`` (the HTTP
+        answer). Default False: only what the ranking needs (labels when several solutions
+        are wanted, manipulability when ranked by it), so a single solution nearest the seed
+        costs no label nor Jacobian (the benchmark's and trajectories' hot path).
 
     Returns
     -------
@@ -189,7 +195,9 @@ def solve(
     check_rank_by(options.rank_by, clearance)
     task = options.task()
     problem = IKProblem(robot, ch, target, q_seed, options, task)
-    search = Search(problem, accept=accept, cancel=cancel, rng=rng, clearance=clearance)
+    search = Search(
+        problem, accept=accept, cancel=cancel, rng=rng, clearance=clearance, annotate=annotate
+    )
     axes = task.rows[task.rows < 3] if task.check_pos else task.rows[:0]
     far = unreachable_detail(robot, ch, q_seed, target, axes, search.tol_p)
     if far is not None:

@@ -143,10 +143,6 @@ def branch_form(robot: RobotModel, ch: IKChain) -> BranchForm | None:
     return form
 
 
-def _sign(x: float) -> int:
-    return 1 if x >= 0.0 else -1
-
-
 def branch_label(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None:
     """The branch flags of the wire configuration ``q`` (see the module's definitions).
 
@@ -169,23 +165,32 @@ def branch_label(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None
     form = branch_form(robot, chain)
     if form is None:
         return None
-    model = robot.model
-    data = model.createData()
+    model, data = robot.model, robot.data
     pin.forwardKinematics(model, data, robot.to_pin(np.asarray(q, dtype=float)))
-    z = [data.oMi[p].rotation @ a for p, a in zip(form.pin_ids, form.axes, strict=True)]
-    o = [data.oMi[p].translation for p in form.pin_ids]
+    oMi = data.oMi
+    z = [(oMi[p].rotation @ a).tolist() for p, a in zip(form.pin_ids, form.axes, strict=True)]
+    o = [oMi[p].translation for p in form.pin_ids]
     if form.kind == "planar2":
         p = pin.updateFramePlacement(model, data, chain.frame_id).translation
-        up = float(np.cross(z[0], o[1] - o[0]) @ (p - o[1])) >= 0.0
+        up = _triple(z[0], (o[1] - o[0]).tolist(), (p - o[1]).tolist()) >= 0.0
         return "elbow_up" if up else "elbow_down"
-    w = data.oMi[form.pin_ids[4]].act(form.wrist)
-    shoulder = _sign(float(np.cross(z[0], z[1]) @ (w - o[1])))
-    parts = ["shoulder_right" if shoulder > 0 else "shoulder_left"]
+    w = oMi[form.pin_ids[4]].act(form.wrist)
+    shoulder = _triple(z[0], z[1], (w - o[1]).tolist())
+    parts = ["shoulder_right" if shoulder >= 0.0 else "shoulder_left"]
     if form.elbow:
         t = o[3] if form.tip_axis4 else w
-        turn = float(np.cross(z[1], o[2] - o[1]) @ (t - o[2]))
-        side = float(np.cross(z[0], z[1]) @ (t - o[1]))
+        turn = _triple(z[1], (o[2] - o[1]).tolist(), (t - o[2]).tolist())
+        side = _triple(z[0], z[1], (t - o[1]).tolist())
         parts.append("elbow_up" if turn * side < 0.0 else "elbow_down")
-    noflip = float(np.cross(z[3], z[5]) @ z[4]) >= 0.0
+    noflip = _triple(z[3], z[5], z[4]) >= 0.0
     parts.append("wrist_noflip" if noflip else "wrist_flip")
     return "/".join(parts)
+
+
+def _triple(a: list[float], b: list[float], c: list[float]) -> float:
+    """(a × b)·c of three 3-vectors (plain floats: no array overhead on the hot path)."""
+    return (
+        (a[1] * b[2] - a[2] * b[1]) * c[0]
+        + (a[2] * b[0] - a[0] * b[2]) * c[1]
+        + (a[0] * b[1] - a[1] * b[0]) * c[2]
+    )

@@ -155,7 +155,8 @@ def unreachable_detail(
     if bound is None:
         return None
     b, reach = bound
-    d = float(np.linalg.norm((target.translation - b)[axes]))
+    diff = target.translation - b
+    d = math.hypot(*(float(diff[i]) for i in axes))  # hypot: no overflow of the squares
     if d <= reach * (1.0 + REACH_SLACK) + tol_p:
         return None
     return (
@@ -169,7 +170,7 @@ def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
     """The weighted task Jacobian J_e (active columns), the weighted task error and the full
     error e = [p − p_t; log3(R R_tᵀ)] at wire ``q``."""
     robot, ch = s.robot, s.ch
-    model, data = robot.model, robot.model.createData()
+    model, data = robot.model, robot.data
     qp = robot.to_pin(q)
     pin.computeJointJacobians(model, data, qp)
     T = pin.updateFramePlacement(model, data, ch.frame_id)
@@ -193,7 +194,7 @@ def _unconstrained(s: Search, q: np.ndarray) -> str | None:
     active = s.ch.active
     for _ in range(UNCONSTRAINED_ITERATIONS):
         Je, et, e = _task_jacobian(s, q)
-        if not np.isfinite(e).all():
+        if not (np.isfinite(e).all() and np.isfinite(Je).all()):
             return None
         ep, er = s._checked(e)
         if ep <= s.tol_p and er <= s.tol_r:
@@ -253,6 +254,8 @@ def classify(
         )
     qa = q[s.ch.active]
     Je, et, _ = _task_jacobian(s, q)
+    if not (np.isfinite(Je).all() and np.isfinite(et).all()):
+        return "timeout", f"the budget ran out; {errors}"  # no finite Jacobian to judge by
     pinned = _pinned(s, Je, et, qa)
     if pinned is not None:
         return "joint_limits", (

@@ -20,7 +20,8 @@ smallest Euclidean joint distance), annotated with
 - ``seed_distance``: the largest single-joint move from the seed, max_i |q_i − s_i| (rad or
   m; continuous joints around the circle), the move the slowest joint must make, not the sum;
 - ``manipulability``: Yoshikawa's w = ∏σ_i of the frame Jacobian (all six rows, world axes)
-  over the joints that move the frame (:func:`app.kinematics.analysis.compute_manipulability`);
+  over the joints that move the frame (√det of the smaller Gram matrix,
+  :func:`app.kinematics.analysis.yoshikawa_batch`; the ``yoshikawa`` of the analysis);
 - ``clearance``: with obstacles, the smallest distance (m) between the robot's collision
   geometry and the obstacles (:mod:`app.kinematics.collision`; negative: penetration), else
   None.
@@ -32,15 +33,18 @@ joint distance, so the order is deterministic.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+import pinocchio as pin
 
-from app.kinematics.analysis import compute_manipulability
+from app.kinematics.analysis import yoshikawa_batch
 from app.kinematics.collision import collision_model
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.ik.branches import branch_form, branch_label
+from app.kinematics.jacobian import frame_jacobian_by_id
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
 
@@ -116,6 +120,13 @@ class Grouping:
         return [self._root(i) for i in range(len(self.qs))]
 
 
+def manipulability(robot: RobotModel, ch: IKChain, q: np.ndarray) -> float:
+    """Yoshikawa's ∏σ_i of the frame Jacobian (6 rows, world axes) over the chain's moving
+    joints at wire configuration ``q`` (as :func:`app.kinematics.analysis.manipulability_of`)."""
+    J = frame_jacobian_by_id(robot, robot.to_pin(q), ch.frame_id, pin.LOCAL_WORLD_ALIGNED)
+    return float(yoshikawa_batch(J[None, :, ch.active])[0])
+
+
 def clearance_function(
     robot: RobotModel, obstacles: Sequence[Obstacle], mode: str = "mesh"
 ) -> Callable[[np.ndarray], float] | None:
@@ -156,14 +167,27 @@ def representatives(
     rank_by: str = "seed_distance",
     clearance: Callable[[np.ndarray], float] | None = None,
     wanted: int | None = None,
+    annotate: bool = True,
 ) -> list[IKSolution]:
     """One solution per branch (nearest the seed), annotated and ranked (module doc).
 
     ``grouping`` holds the branches of ``solutions`` (same order); None: rebuilt here.
-    At most ``wanted`` solutions are returned (all when None).
+    At most ``wanted`` solutions are returned (all when None). Without ``annotate``, only
+    what the ranking needs is computed (always ``seed_distance``; ``branch`` when several
+    solutions are wanted; ``manipulability`` when ranked by it): the core's hot path, where
+    one solution nearest the seed is wanted, then pays no label nor Jacobian.
     """
     if not solutions:
         return []
+    if wanted == 1 and rank_by == "seed_distance" and not annotate and clearance is None:
+        best, best_order = solutions[0], (math.inf, math.inf)
+        for s in solutions:
+            d = joint_distance(robot, s.q, seed)
+            order = (float(d.max(initial=0.0)), math.sqrt(float(d @ d)))
+            if order < best_order:
+                best, best_order = s, order
+        best.seed_distance = best_order[0]
+        return [best]
     if grouping is None or len(grouping.qs) != len(solutions):
         grouping = Grouping(robot, ch)
         for s in solutions:
@@ -180,11 +204,12 @@ def representatives(
     for k, (order, s) in enumerate(chosen):
         s.seed_distance = order[0]
         s.branch = grouping.labels[order[2]] if grouping.labelled else f"cluster_{k}"
-        s.manipulability = compute_manipulability(robot, s.q, ch.frame, joints=ch.active).yoshikawa
+        if annotate or rank_by == "manipulability":
+            s.manipulability = manipulability(robot, ch, s.q)
         s.clearance = None if clearance is None else clearance(s.q)
         out.append((order, s))
     if rank_by == "manipulability":
-        out.sort(key=lambda item: (-item[1].manipulability, item[0]))
+        out.sort(key=lambda item: (-(item[1].manipulability or 0.0), item[0]))
     elif rank_by == "clearance":
         out.sort(key=lambda item: (-(item[1].clearance or 0.0), item[0]))
     ranked = [s for _, s in out]

@@ -49,7 +49,7 @@ class IKSolution:
     orientation_error: float
     branch: str | None = None
     seed_distance: float = 0.0
-    manipulability: float = 0.0
+    manipulability: float | None = None
     clearance: float | None = None
 
 
@@ -108,6 +108,9 @@ class Search:
         fixed table in order, so answers are reproducible).
     clearance
         Optional ``q ↦`` robot–obstacle distance (m), reported with each answered solution.
+    annotate
+        Label every answered solution's branch and manipulability (else only what the
+        ranking needs, :func:`~.ranking.representatives`).
     """
 
     def __init__(
@@ -118,6 +121,7 @@ class Search:
         cancel: threading.Event | None = None,
         rng: np.random.Generator | None = None,
         clearance: Callable[[np.ndarray], float] | None = None,
+        annotate: bool = True,
     ) -> None:
         task, options = problem.task, problem.options
         self.options = options
@@ -132,6 +136,7 @@ class Search:
         self.rng = rng
         self.wanted = options.num_solutions
         self.clearance = clearance
+        self.annotate = annotate
         self.solutions: list[IKSolution] = []
         #: Branches of the solutions (only needed to count them when several are wanted).
         self.grouping = Grouping(self.robot, self.ch) if self.wanted > 1 else None
@@ -302,6 +307,7 @@ class Search:
             rank_by=self.options.rank_by,
             clearance=self.clearance,
             wanted=self.wanted,
+            annotate=self.annotate,
         )
         elapsed = (time.perf_counter() - t_start) * 1e3
         if sols:
