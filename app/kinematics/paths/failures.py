@@ -70,8 +70,8 @@ def residuals(T: pin.SE3, target: pin.SE3, task: Task) -> tuple[float, float]:
     task checks (0 for one it does not)."""
     dp = T.translation - target.translation
     phi = pin.log3(T.rotation @ target.rotation.T)
-    if task.full_pose:
-        return math.hypot(*dp), math.hypot(*phi)
+    if task.full_pose:  # hypot of plain floats: no overflow, no per-element array access
+        return math.hypot(*dp.tolist()), math.hypot(*phi.tolist())
     e = np.concatenate((dp, phi))
     r = task.rows
     ep = float(np.linalg.norm(e[r[r < 3]])) if task.check_pos else 0.0

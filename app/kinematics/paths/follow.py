@@ -51,12 +51,13 @@ from app.kinematics.ik.problem import IKOptions, frame_name
 from app.kinematics.ik.search import wrap_angle
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
+from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
 from app.kinematics.paths.segments import CartesianPath, check_max_step
 
 __all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
 
-#: Jacobian evaluations of the first, local attempt at a waypoint (seeded by the last point).
-LOCAL_ITERATIONS = 30
+#: The clock of ``deadline`` (a module attribute so that tests can replace it).
+_clock = time.perf_counter
 #: Halvings of a Cartesian step that the local attempt could not make, before giving up.
 MAX_BISECT = 4
 #: Levels of midpoints inserted between two accepted points to meet ``max_deviation``.
@@ -64,6 +65,8 @@ MAX_DENSIFY_DEPTH = 6
 #: Fractions of a joint-space step at which the deviation from the path is checked.
 FRACTIONS = (0.25, 0.5, 0.75)
 MIDDLE_FIRST = (0.5, 0.25, 0.75)
+#: Smallest time budget (ms) of an IK solve once the path's deadline is near or past.
+MIN_SOLVE_MS = 0.1
 
 
 @dataclass(frozen=True, slots=True)
@@ -162,14 +165,18 @@ class _Walk:
         accept: Callable[[np.ndarray], bool] | None,
         rng: np.random.Generator | None,
         cancel: threading.Event | None,
+        deadline: float | None = None,
     ) -> None:
         self.robot, self.path, self.options = robot, path, options
+        self.deadline = deadline
         self.ch = _frame_and_chain(robot, ik_options)
         self.task = ik_options.task()
         self.full = replace(ik_options, num_solutions=1)
         cap = ik_options.max_iterations
         local_cap = LOCAL_ITERATIONS if cap is None else min(cap, LOCAL_ITERATIONS)
         self.local = replace(self.full, max_iterations=local_cap)
+        self.tol = (float(ik_options.tolerance[0]), float(ik_options.tolerance[1]))
+        self.warm = LocalSolver(robot, self.ch, self.task, self.tol, cap)
         self.accept, self.rng, self.cancel = accept, rng, cancel
         self.iterations = 0
         self.label: str | None = None
@@ -188,15 +195,30 @@ class _Walk:
             record_all,
         )
 
+    def warm_start(self, q_prev: np.ndarray, T: pin.SE3, s: float) -> PathPoint | None:
+        """The point at ``T`` (path parameter ``s``) by the local attempt from ``q_prev``
+        (:mod:`.local`), verified independently; None when it fails or is refused."""
+        q, n = self.warm.attempt(q_prev, T)
+        self.iterations += n
+        if q is None:
+            return None
+        ok = verify(self.robot, self.ch, self.task, self.tol, q, T, self.guard(q_prev))
+        return None if ok is None else PathPoint(ok[0], ok[1], ok[2], s)
+
     def solve(
         self, q_prev: np.ndarray, T: pin.SE3, full: bool = False
     ) -> tuple[ik.IKResult, Guard]:
         """IK of ``T`` seeded by ``q_prev`` under the guards (local budget unless ``full``)."""
         g = self.guard(q_prev, record_all=full)
+        opts = self.full if full else self.local
+        if self.deadline is not None:
+            left_ms = (self.deadline - _clock()) * 1e3
+            if left_ms < opts.timeout_ms:
+                opts = replace(opts, timeout_ms=max(left_ms, MIN_SOLVE_MS))
         res = ik.solve(
             self.robot,
             T,
-            self.full if full else self.local,
+            opts,
             seed=q_prev,
             accept=g,
             rng=self.rng,
@@ -211,6 +233,9 @@ class _Walk:
         halving the step when the local attempt fails; on failure the last attempt (the
         points reached on the way stay)."""
         a = self.points[-1]
+        b = self.warm_start(a.q, T_b, s_b)
+        if b is not None:
+            return self.densify(a, b)
         res, g = self.solve(a.q, T_b)
         if not res.success and depth >= MAX_BISECT:
             res, g = self.solve(a.q, T_b, full=True)
@@ -260,13 +285,30 @@ class _Walk:
             res, g = self.solve(a.q, T_m, full=True)
             g.deviation = (ep, er, depth)
             return res, g, T_m, s_m
-        res, g = self.solve(a.q, T_m)
-        if not res.success:
-            res, g = self.solve(a.q, T_m, full=True)
+        m = self.warm_start(a.q, T_m, s_m)
+        if m is None:
+            res, g = self.solve(a.q, T_m)
             if not res.success:
-                return res, g, T_m, s_m
-        m = PathPoint(res.q, res.position_error, res.orientation_error, s_m)
+                res, g = self.solve(a.q, T_m, full=True)
+                if not res.success:
+                    return res, g, T_m, s_m
+            m = PathPoint(res.q, res.position_error, res.orientation_error, s_m)
         return self.densify(a, m, depth + 1) or self.densify(m, b, depth + 1)
+
+
+def _timed_out(walk: _Walk, index: int, s: float) -> PathFailure:
+    """The ``timeout`` failure at waypoint ``index``: the path's budget ran out before it."""
+    last = walk.points[-1]
+    return PathFailure(
+        index,
+        s,
+        "timeout",
+        f"the path's time budget ran out before waypoint {index} (s = {s:.4f}); the points "
+        f"up to s = {last.s:.4f} are returned",
+        last.q.copy(),
+        last.position_error,
+        last.orientation_error,
+    )
 
 
 def follow(
@@ -279,6 +321,7 @@ def follow(
     accept: Callable[[np.ndarray], bool] | None = None,
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
+    deadline: float | None = None,
 ) -> PathResult:
     """Joint configurations following ``path`` from ``start`` (see the module docstring).
 
@@ -300,6 +343,11 @@ def follow(
         never returned.
     rng, cancel
         Passed to every :func:`app.kinematics.ik.solve` (restarts; the client went away).
+    deadline
+        Optional :func:`time.perf_counter` instant bounding the whole call: once it has
+        passed, the walk stops before the next waypoint with the failure reason ``timeout``
+        (the points reached so far are kept). Each IK solve keeps its own ``timeout_ms``, at
+        most the time left.
 
     Returns
     -------
@@ -307,7 +355,7 @@ def follow(
         The points reached and, when the path could not be completed, the typed failure.
     """
     t0 = time.perf_counter()
-    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel)
+    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel, deadline)
     q0 = robot.configuration(start, field="start")
     for i in np.flatnonzero((q0 < robot.lower) | (q0 > robot.upper)):
         raise InvalidInputError(
@@ -336,6 +384,9 @@ def follow(
     else:
         points.append(PathPoint(q0.copy(), ep, er, 0.0))
     for k in range(1, len(poses)) if failure is None else ():
+        if deadline is not None and _clock() >= deadline:
+            failure = _timed_out(walk, k, float(ss[k]))
+            break
         out = walk.advance(poses[k], float(ss[k]))
         if out is not None:
             res, g, T, s = out

@@ -28,6 +28,7 @@ whose total length is zero (every segment ends where it starts) has only its sta
 
 from __future__ import annotations
 
+import bisect
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -167,6 +168,7 @@ class CartesianPath:
         if pieces and self.length > 0.0:
             self.ends[-1] = 1.0
         self._starts = np.concatenate(([0.0], self.ends[:-1]))
+        self._ends, self._starts_list = self.ends.tolist(), self._starts.tolist()
 
     @classmethod
     def from_segments(
@@ -195,12 +197,12 @@ class CartesianPath:
         """(segment index, its parameter u) at path parameter ``s``."""
         if self.length == 0.0:
             return len(self._pieces) - 1, 1.0
-        i = int(np.searchsorted(self.ends, s, side="left"))
+        i = bisect.bisect_left(self._ends, s)  # plain floats: searchsorted's "left"
         i = min(i, len(self._pieces) - 1)
         # Skip zero-length segments sharing this s (they end where the next starts).
         while i < len(self._pieces) - 1 and self._pieces[i].length == 0.0:
             i += 1
-        a, b = self._starts[i], self.ends[i]
+        a, b = self._starts_list[i], self._ends[i]
         return i, (1.0 if b <= a else (s - a) / (b - a))
 
     def pose_at(self, s: float) -> pin.SE3:
