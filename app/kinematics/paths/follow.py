@@ -228,14 +228,41 @@ class _Walk:
         return res, g
 
     # ------------------------------------------------------------------- walking
-    def advance(self, T_b: pin.SE3, s_b: float, depth: int = 0) -> _Failed | None:
-        """Append the points from the last one to the pose ``T_b`` at ``s_b`` (included),
-        halving the step when the local attempt fails; on failure the last attempt (the
-        points reached on the way stay)."""
-        a = self.points[-1]
-        b = self.warm_start(a.q, T_b, s_b)
+    def warm_chain(
+        self, q_a: np.ndarray, s_a: float, T_b: pin.SE3, s_b: float, depth: int
+    ) -> list[PathPoint] | None:
+        """Verified points from ``q_a`` (at ``s_a``) to ``T_b`` (at ``s_b``, the last one)
+        by local attempts only (:meth:`warm_start`), halving the step where one fails (down
+        to depth :data:`MAX_BISECT`); None when some half still fails. Nothing is appended."""
+        b = self.warm_start(q_a, T_b, s_b)
         if b is not None:
-            return self.densify(a, b)
+            return [b]
+        if depth >= MAX_BISECT:
+            return None
+        s_m = 0.5 * (s_a + s_b)
+        first = self.warm_chain(q_a, s_a, self.path.pose_at(s_m), s_m, depth + 1)
+        if first is None:
+            return None
+        rest = self.warm_chain(first[-1].q, s_m, T_b, s_b, depth + 1)
+        return None if rest is None else first + rest
+
+    def advance(
+        self, T_b: pin.SE3, s_b: float, depth: int = 0, warm: bool = True
+    ) -> _Failed | None:
+        """Append the points from the last one to the pose ``T_b`` at ``s_b`` (included);
+        on failure the last attempt (the points reached on the way stay).
+
+        First by local attempts (:meth:`warm_chain`, the step halved where they fail); when
+        they cannot, by :func:`app.kinematics.ik.solve` with the local budget, halving the
+        step when it fails, then with the whole budget at the last level."""
+        a = self.points[-1]
+        chain = self.warm_chain(a.q, a.s, T_b, s_b, depth) if warm else None
+        if chain is not None:
+            for b in chain:
+                out = self.densify(self.points[-1], b)
+                if out is not None:
+                    return out
+            return None
         res, g = self.solve(a.q, T_b)
         if not res.success and depth >= MAX_BISECT:
             res, g = self.solve(a.q, T_b, full=True)
@@ -244,8 +271,8 @@ class _Walk:
         if depth >= MAX_BISECT:
             return res, g, T_b, s_b
         s_m = 0.5 * (a.s + s_b)
-        return self.advance(self.path.pose_at(s_m), s_m, depth + 1) or self.advance(
-            T_b, s_b, depth + 1
+        return self.advance(self.path.pose_at(s_m), s_m, depth + 1, False) or self.advance(
+            T_b, s_b, depth + 1, False
         )
 
     def deviation(self, a: PathPoint, b: PathPoint) -> tuple[float, float]:

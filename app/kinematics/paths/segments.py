@@ -64,9 +64,10 @@ class Arc:
     to: pin.SE3
 
 
-def _slerp(R0: np.ndarray, w: np.ndarray, t: float) -> np.ndarray:
-    """R0·exp3(t·w): the rotation a fraction ``t`` along the geodesic R0 → R0·exp3(w)."""
-    return R0 @ pin.exp3(t * w)
+def _slerp(R0: np.ndarray, w: np.ndarray, t: float, turns: bool = True) -> np.ndarray:
+    """R0·exp3(t·w): the rotation a fraction ``t`` along the geodesic R0 → R0·exp3(w)
+    (R0 itself, exactly, when the geodesic does not ``turns``: w = 0)."""
+    return R0 @ pin.exp3(t * w) if turns else R0
 
 
 class _Piece:
@@ -133,9 +134,9 @@ class _Piece:
         else:
             p = self.p0 + u * self.dp
         if u <= self.u_via:
-            R = _slerp(self.start.rotation, self.w1, u / self.u_via)
+            R = _slerp(self.start.rotation, self.w1, u / self.u_via, self.th1 > 0.0)
         else:
-            R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via))
+            R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via), self.th2 > 0.0)
         return pin.SE3(R, p)
 
     def steps(self, max_p: float, max_r: float) -> int:
