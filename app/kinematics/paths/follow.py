@@ -2,21 +2,25 @@
 
 :func:`follow` walks the waypoints of :meth:`CartesianPath.sample
 <app.kinematics.paths.segments.CartesianPath.sample>` from the start configuration. Each
-waypoint is solved by :func:`app.kinematics.ik.solve` seeded by the previous accepted
-configuration, and a solution is accepted only when
+waypoint is solved seeded by the previous accepted configuration, and a solution is accepted
+only when
 
 - no joint moves more than ``max_joint_step`` (rad or m; continuous joints measured around
   the circle, :func:`~app.kinematics.ik.search.joint_distance`),
 - its branch label (:func:`branch_of`) is the start's,
 - and the caller's ``accept`` (collision-free) holds.
 
-These guards run *inside* the solver (as its ``accept`` predicate), so a restart that lands on
-another branch is dropped and the search goes on, rather than ending on a solution that can
-never pass. The first attempt at a waypoint is local (at most :data:`LOCAL_ITERATIONS`
-Jacobian evaluations, the closed forms' candidates first where they exist); when it fails,
-the Cartesian step is halved (at most :data:`MAX_BISECT` times, each half solved in turn),
-and only then does a last attempt with the caller's whole budget decide, which also records
-why the candidates it met were refused (:mod:`.failures`).
+The first attempt at a waypoint is the local solve of :mod:`.local`: one compiled damped
+least-squares attempt from the previous point (full pose; a few iterations), its answer
+re-checked independently (a separate forward kinematics against the waypoint within the IK
+tolerance, the joint limits, and the guards above); where it fails, the Cartesian step is
+halved (at most :data:`MAX_BISECT` times) with local attempts only. When even that fails,
+:func:`app.kinematics.ik.solve` takes over with the guards *inside* the solver (as its
+``accept`` predicate, so a restart that lands on another branch is dropped and the search
+goes on): first with a local budget (at most :data:`LOCAL_ITERATIONS` Jacobian evaluations,
+the closed forms' candidates first where they exist), halving the step on failure, and only
+then a last attempt with the caller's whole budget decides, which also records why the
+candidates it met were refused (:mod:`.failures`).
 
 Densification: between two accepted points a, b the joints move linearly; the frame's pose
 along that motion is checked (forward kinematics at fractions :data:`FRACTIONS` of the step)
@@ -27,7 +31,9 @@ middle s is solved (seeded by a) and inserted, and both halves are checked again
 
 The first waypoint that cannot be reached ends the walk: the result keeps the points reached
 (``fraction`` = s of the last one) and a :class:`PathFailure` with the waypoint's index in
-the sampled list, a typed ``reason`` and the best configuration met.
+the sampled list, a typed ``reason`` and the best configuration met. A ``deadline``
+(:func:`time.perf_counter` instant) bounds the whole call: once passed, the walk stops
+before the next waypoint with the reason ``timeout``.
 """
 
 from __future__ import annotations
