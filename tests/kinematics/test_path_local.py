@@ -20,7 +20,7 @@ from app.kinematics.paths.follow import PathOptions, follow
 from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import CartesianPath, Line
 from bench._lines import random_lines
-from tests.kinematics.test_paths import check_points, ik_options
+from tests.kinematics.path_checks import check_points, ik_options
 
 ARMS = [("ur5", "tool0"), ("panda", "panda_hand")]
 OPTIONS = PathOptions(max_step=(0.01, 0.05), max_joint_step=0.1)
