@@ -44,6 +44,9 @@ ROTATION_LENGTH = 0.1
 MAX_POINTS = 100_000
 #: Segment length (m) below which a segment counts as zero-length (rounding of equal poses).
 ZERO_LENGTH = 1e-12
+#: A segment whose rotation turns less than this (rad) keeps its start's orientation
+#: exactly (no slerp): the pose it gives differs from the slerp's by less than this angle.
+NO_TURN = 1e-14
 #: Relative size of |(via − start) × (to − start)| below which the three arc points are
 #: collinear (or two coincide).
 COLLINEAR = 1e-9
@@ -66,7 +69,7 @@ class Arc:
 
 def _slerp(R0: np.ndarray, w: np.ndarray, t: float, turns: bool = True) -> np.ndarray:
     """R0·exp3(t·w): the rotation a fraction ``t`` along the geodesic R0 → R0·exp3(w)
-    (R0 itself, exactly, when the geodesic does not ``turns``: w = 0)."""
+    (R0 itself when the geodesic does not ``turns``: ‖w‖ ≤ :data:`NO_TURN`)."""
     return R0 @ pin.exp3(t * w) if turns else R0
 
 
@@ -75,7 +78,7 @@ class _Piece:
 
     def __init__(self, start: pin.SE3, seg: Line | Arc, field: str) -> None:
         self.start, self.end = start, seg.to
-        R0 = start.rotation
+        R0 = self.R0 = start.rotation.copy()
         if isinstance(seg, Line):
             self.arc = False
             self.p0, self.dp = start.translation.copy(), seg.to.translation - start.translation
@@ -134,9 +137,9 @@ class _Piece:
         else:
             p = self.p0 + u * self.dp
         if u <= self.u_via:
-            R = _slerp(self.start.rotation, self.w1, u / self.u_via, self.th1 > 0.0)
+            R = _slerp(self.R0, self.w1, u / self.u_via, self.th1 > NO_TURN)
         else:
-            R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via), self.th2 > 0.0)
+            R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via), self.th2 > NO_TURN)
         return pin.SE3(R, p)
 
     def steps(self, max_p: float, max_r: float) -> int:
