@@ -147,7 +147,7 @@ def verify(
     if robot.has_continuous:
         c = robot._cont_wire
         q[c] = wrap_angle(q[c])
-    if not np.isfinite(q).all() or (q < robot.lower).any() or (q > robot.upper).any():
+    if not ((q >= robot.lower) & (q <= robot.upper)).all():  # NaN fails too
         return None
     ep, er = residuals(frame_pose(robot, q, chain.frame_id), target, task)
     if not (ep <= tolerance[0] and er <= tolerance[1]):
