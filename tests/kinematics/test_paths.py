@@ -23,23 +23,14 @@ from app.kinematics.errors import InvalidInputError
 from app.kinematics.ik.branches import branch_label
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
-from app.kinematics.ik.search import joint_distance
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import parse_obstacles
-from app.kinematics.paths.follow import PathOptions, PathResult, follow, start_pose
+from app.kinematics.paths.follow import PathOptions, follow, start_pose
 from app.kinematics.paths.segments import Arc, CartesianPath, Line
 from bench._lines import random_lines
+from tests.kinematics.path_checks import check_points, ik_options
 from tests.kinematics.reference import pose_error, reference_chain_pose, reference_pose
 
-REASONS = {
-    "unreachable",
-    "joint_limits",
-    "collision",
-    "singular",
-    "timeout",
-    "joint_step",
-    "branch",
-}
 #: Lines per chunk of the big test, chunks per arm (1000 lines per arm in all).
 CHUNK, CHUNKS = 100, 10
 #: Completed lines per chunk of 100, at least. Measured (2026-11-24): UR5 69–83 per chunk,
@@ -47,43 +38,6 @@ CHUNK, CHUNKS = 100, 10
 #: ``joint_limits`` (the line drives a joint into its limit: the UR5's ±2π wrists, the Panda's
 #: elbow) and ``singular`` (UR5 wrist and elbow); see docs/benchmarks.md.
 FLOOR = {"ur5": 0.65, "panda": 0.65}
-TOL = 1e-6
-
-
-def ik_options(frame: str, **kw) -> IKOptions:
-    return IKOptions(frame=frame, tolerance=(TOL, TOL), max_iterations=200, timeout_ms=5000, **kw)
-
-
-def check_points(
-    robot: RobotModel,
-    frame: str,
-    q0: np.ndarray,
-    path: CartesianPath,
-    res: PathResult,
-    options: PathOptions,
-    tol: float = TOL,
-    rotation: bool = True,
-) -> None:
-    """The invariants of every answer: starts at q0, s increasing, every step within the
-    joint step, every pose (yourdfpy) on the path at its s (its position only unless
-    ``rotation``), fraction and failure agree."""
-    pts = res.points
-    np.testing.assert_array_equal(pts[0].q, q0)
-    assert pts[0].s == 0.0
-    for a, b in zip(pts, pts[1:], strict=False):
-        assert b.s > a.s
-        assert joint_distance(robot, a.q, b.q).max() <= options.max_joint_step + 1e-12
-    for p in pts:
-        T = reference_chain_pose(robot, p.q, frame)
-        dp, dr = pose_error(T, path.pose_at(p.s).homogeneous)
-        assert dp <= tol * 1.01 and (dr <= tol * 1.01 or not rotation), (p.s, dp, dr)
-        assert p.position_error == pytest.approx(dp, abs=1e-8)
-    assert res.fraction == pts[-1].s
-    if res.failure is None:
-        assert res.fraction == 1.0
-    else:
-        assert res.fraction < 1.0 and res.failure.reason in REASONS
-        assert res.failure.s > res.fraction and res.failure.detail
 
 
 # ---------------------------------------------------------------------- random lines

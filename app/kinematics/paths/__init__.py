@@ -7,6 +7,8 @@ The package, one concept per module:
   path parameter;
 - :mod:`.follow`: IK at each point seeded by the previous solution, step halving,
   densification to the deviation bound, the points reached;
+- :mod:`.local`: the warm-started local solve of the next point (one compiled attempt from
+  the previous point) and its independent verification;
 - :mod:`.failures`: the joint-step, branch and collision guards inside the solver, and the
   typed failure (``reason``, ``detail``) of the first point that cannot be reached;
 - :mod:`.timing`: time-optimal parameterization of the joint path (toppra) under velocity

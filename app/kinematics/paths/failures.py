@@ -69,9 +69,12 @@ def residuals(T: pin.SE3, target: pin.SE3, task: Task) -> tuple[float, float]:
     """Position (m) and rotation (rad) error of ``T`` against ``target`` on the components the
     task checks (0 for one it does not)."""
     dp = T.translation - target.translation
-    phi = pin.log3(T.rotation @ target.rotation.T)
     if task.full_pose:
-        return math.hypot(*dp), math.hypot(*phi)
+        # The angle of R·R_tᵀ is that of its conjugate R_tᵀ·R (one product in Pinocchio,
+        # no 3×3 NumPy product); hypot of plain floats: no overflow, no array access.
+        phi = pin.log3(target.actInv(T).rotation)
+        return math.hypot(*dp.tolist()), math.hypot(*phi.tolist())
+    phi = pin.log3(T.rotation @ target.rotation.T)
     e = np.concatenate((dp, phi))
     r = task.rows
     ep = float(np.linalg.norm(e[r[r < 3]])) if task.check_pos else 0.0

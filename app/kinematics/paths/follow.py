@@ -2,21 +2,25 @@
 
 :func:`follow` walks the waypoints of :meth:`CartesianPath.sample
 <app.kinematics.paths.segments.CartesianPath.sample>` from the start configuration. Each
-waypoint is solved by :func:`app.kinematics.ik.solve` seeded by the previous accepted
-configuration, and a solution is accepted only when
+waypoint is solved seeded by the previous accepted configuration, and a solution is accepted
+only when
 
 - no joint moves more than ``max_joint_step`` (rad or m; continuous joints measured around
   the circle, :func:`~app.kinematics.ik.search.joint_distance`),
 - its branch label (:func:`branch_of`) is the start's,
 - and the caller's ``accept`` (collision-free) holds.
 
-These guards run *inside* the solver (as its ``accept`` predicate), so a restart that lands on
-another branch is dropped and the search goes on, rather than ending on a solution that can
-never pass. The first attempt at a waypoint is local (at most :data:`LOCAL_ITERATIONS`
-Jacobian evaluations, the closed forms' candidates first where they exist); when it fails,
-the Cartesian step is halved (at most :data:`MAX_BISECT` times, each half solved in turn),
-and only then does a last attempt with the caller's whole budget decide, which also records
-why the candidates it met were refused (:mod:`.failures`).
+The first attempt at a waypoint is the local solve of :mod:`.local`: one compiled damped
+least-squares attempt from the previous point (full pose; a few iterations), its answer
+re-checked independently (a separate forward kinematics against the waypoint within the IK
+tolerance, the joint limits, and the guards above); where it fails, the Cartesian step is
+halved (at most :data:`MAX_BISECT` times) with local attempts only. When even that fails,
+:func:`app.kinematics.ik.solve` takes over with the guards *inside* the solver (as its
+``accept`` predicate, so a restart that lands on another branch is dropped and the search
+goes on): first with a local budget (at most :data:`LOCAL_ITERATIONS` Jacobian evaluations,
+the closed forms' candidates first where they exist), halving the step on failure, and only
+then a last attempt with the caller's whole budget decides, which also records why the
+candidates it met were refused (:mod:`.failures`).
 
 Densification: between two accepted points a, b the joints move linearly; the frame's pose
 along that motion is checked (forward kinematics at fractions :data:`FRACTIONS` of the step)
@@ -27,7 +31,9 @@ middle s is solved (seeded by a) and inserted, and both halves are checked again
 
 The first waypoint that cannot be reached ends the walk: the result keeps the points reached
 (``fraction`` = s of the last one) and a :class:`PathFailure` with the waypoint's index in
-the sampled list, a typed ``reason`` and the best configuration met.
+the sampled list, a typed ``reason`` and the best configuration met. A ``deadline``
+(:func:`time.perf_counter` instant) bounds the whole call: once passed, the walk stops
+before the next waypoint with the reason ``timeout``.
 """
 
 from __future__ import annotations
@@ -51,12 +57,13 @@ from app.kinematics.ik.problem import IKOptions, frame_name
 from app.kinematics.ik.search import wrap_angle
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
+from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
 from app.kinematics.paths.segments import CartesianPath, check_max_step
 
 __all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
 
-#: Jacobian evaluations of the first, local attempt at a waypoint (seeded by the last point).
-LOCAL_ITERATIONS = 30
+#: The clock of ``deadline`` (a module attribute so that tests can replace it).
+_clock = time.perf_counter
 #: Halvings of a Cartesian step that the local attempt could not make, before giving up.
 MAX_BISECT = 4
 #: Levels of midpoints inserted between two accepted points to meet ``max_deviation``.
@@ -64,6 +71,8 @@ MAX_DENSIFY_DEPTH = 6
 #: Fractions of a joint-space step at which the deviation from the path is checked.
 FRACTIONS = (0.25, 0.5, 0.75)
 MIDDLE_FIRST = (0.5, 0.25, 0.75)
+#: Smallest time budget (ms) of an IK solve once the path's deadline is near or past.
+MIN_SOLVE_MS = 0.1
 
 
 @dataclass(frozen=True, slots=True)
@@ -162,14 +171,18 @@ class _Walk:
         accept: Callable[[np.ndarray], bool] | None,
         rng: np.random.Generator | None,
         cancel: threading.Event | None,
+        deadline: float | None = None,
     ) -> None:
         self.robot, self.path, self.options = robot, path, options
+        self.deadline = deadline
         self.ch = _frame_and_chain(robot, ik_options)
         self.task = ik_options.task()
         self.full = replace(ik_options, num_solutions=1)
         cap = ik_options.max_iterations
         local_cap = LOCAL_ITERATIONS if cap is None else min(cap, LOCAL_ITERATIONS)
         self.local = replace(self.full, max_iterations=local_cap)
+        self.tol = (float(ik_options.tolerance[0]), float(ik_options.tolerance[1]))
+        self.warm = LocalSolver(robot, self.ch, self.task, self.tol, cap)
         self.accept, self.rng, self.cancel = accept, rng, cancel
         self.iterations = 0
         self.label: str | None = None
@@ -188,15 +201,30 @@ class _Walk:
             record_all,
         )
 
+    def warm_start(self, q_prev: np.ndarray, T: pin.SE3, s: float) -> PathPoint | None:
+        """The point at ``T`` (path parameter ``s``) by the local attempt from ``q_prev``
+        (:mod:`.local`), verified independently; None when it fails or is refused."""
+        q, n = self.warm.attempt(q_prev, T)
+        self.iterations += n
+        if q is None:
+            return None
+        ok = verify(self.robot, self.ch, self.task, self.tol, q, T, self.guard(q_prev))
+        return None if ok is None else PathPoint(ok[0], ok[1], ok[2], s)
+
     def solve(
         self, q_prev: np.ndarray, T: pin.SE3, full: bool = False
     ) -> tuple[ik.IKResult, Guard]:
         """IK of ``T`` seeded by ``q_prev`` under the guards (local budget unless ``full``)."""
         g = self.guard(q_prev, record_all=full)
+        opts = self.full if full else self.local
+        if self.deadline is not None:
+            left_ms = (self.deadline - _clock()) * 1e3
+            if left_ms < opts.timeout_ms:
+                opts = replace(opts, timeout_ms=max(left_ms, MIN_SOLVE_MS))
         res = ik.solve(
             self.robot,
             T,
-            self.full if full else self.local,
+            opts,
             seed=q_prev,
             accept=g,
             rng=self.rng,
@@ -206,11 +234,41 @@ class _Walk:
         return res, g
 
     # ------------------------------------------------------------------- walking
-    def advance(self, T_b: pin.SE3, s_b: float, depth: int = 0) -> _Failed | None:
-        """Append the points from the last one to the pose ``T_b`` at ``s_b`` (included),
-        halving the step when the local attempt fails; on failure the last attempt (the
-        points reached on the way stay)."""
+    def warm_chain(
+        self, q_a: np.ndarray, s_a: float, T_b: pin.SE3, s_b: float, depth: int
+    ) -> list[PathPoint] | None:
+        """Verified points from ``q_a`` (at ``s_a``) to ``T_b`` (at ``s_b``, the last one)
+        by local attempts only (:meth:`warm_start`), halving the step where one fails (down
+        to depth :data:`MAX_BISECT`); None when some half still fails. Nothing is appended."""
+        b = self.warm_start(q_a, T_b, s_b)
+        if b is not None:
+            return [b]
+        if depth >= MAX_BISECT:
+            return None
+        s_m = 0.5 * (s_a + s_b)
+        first = self.warm_chain(q_a, s_a, self.path.pose_at(s_m), s_m, depth + 1)
+        if first is None:
+            return None
+        rest = self.warm_chain(first[-1].q, s_m, T_b, s_b, depth + 1)
+        return None if rest is None else first + rest
+
+    def advance(
+        self, T_b: pin.SE3, s_b: float, depth: int = 0, warm: bool = True
+    ) -> _Failed | None:
+        """Append the points from the last one to the pose ``T_b`` at ``s_b`` (included);
+        on failure the last attempt (the points reached on the way stay).
+
+        First by local attempts (:meth:`warm_chain`, the step halved where they fail); when
+        they cannot, by :func:`app.kinematics.ik.solve` with the local budget, halving the
+        step when it fails, then with the whole budget at the last level."""
         a = self.points[-1]
+        chain = self.warm_chain(a.q, a.s, T_b, s_b, depth) if warm else None
+        if chain is not None:
+            for b in chain:
+                out = self.densify(self.points[-1], b)
+                if out is not None:
+                    return out
+            return None
         res, g = self.solve(a.q, T_b)
         if not res.success and depth >= MAX_BISECT:
             res, g = self.solve(a.q, T_b, full=True)
@@ -219,8 +277,8 @@ class _Walk:
         if depth >= MAX_BISECT:
             return res, g, T_b, s_b
         s_m = 0.5 * (a.s + s_b)
-        return self.advance(self.path.pose_at(s_m), s_m, depth + 1) or self.advance(
-            T_b, s_b, depth + 1
+        return self.advance(self.path.pose_at(s_m), s_m, depth + 1, False) or self.advance(
+            T_b, s_b, depth + 1, False
         )
 
     def deviation(self, a: PathPoint, b: PathPoint) -> tuple[float, float]:
@@ -260,13 +318,30 @@ class _Walk:
             res, g = self.solve(a.q, T_m, full=True)
             g.deviation = (ep, er, depth)
             return res, g, T_m, s_m
-        res, g = self.solve(a.q, T_m)
-        if not res.success:
-            res, g = self.solve(a.q, T_m, full=True)
+        m = self.warm_start(a.q, T_m, s_m)
+        if m is None:
+            res, g = self.solve(a.q, T_m)
             if not res.success:
-                return res, g, T_m, s_m
-        m = PathPoint(res.q, res.position_error, res.orientation_error, s_m)
+                res, g = self.solve(a.q, T_m, full=True)
+                if not res.success:
+                    return res, g, T_m, s_m
+            m = PathPoint(res.q, res.position_error, res.orientation_error, s_m)
         return self.densify(a, m, depth + 1) or self.densify(m, b, depth + 1)
+
+
+def _timed_out(walk: _Walk, index: int, s: float) -> PathFailure:
+    """The ``timeout`` failure at waypoint ``index``: the path's budget ran out before it."""
+    last = walk.points[-1]
+    return PathFailure(
+        index,
+        s,
+        "timeout",
+        f"the path's time budget ran out before waypoint {index} (s = {s:.4f}); the points "
+        f"up to s = {last.s:.4f} are returned",
+        last.q.copy(),
+        last.position_error,
+        last.orientation_error,
+    )
 
 
 def follow(
@@ -279,6 +354,7 @@ def follow(
     accept: Callable[[np.ndarray], bool] | None = None,
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
+    deadline: float | None = None,
 ) -> PathResult:
     """Joint configurations following ``path`` from ``start`` (see the module docstring).
 
@@ -300,6 +376,11 @@ def follow(
         never returned.
     rng, cancel
         Passed to every :func:`app.kinematics.ik.solve` (restarts; the client went away).
+    deadline
+        Optional :func:`time.perf_counter` instant bounding the whole call: once it has
+        passed, the walk stops before the next waypoint with the failure reason ``timeout``
+        (the points reached so far are kept). Each IK solve keeps its own ``timeout_ms``, at
+        most the time left.
 
     Returns
     -------
@@ -307,7 +388,7 @@ def follow(
         The points reached and, when the path could not be completed, the typed failure.
     """
     t0 = time.perf_counter()
-    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel)
+    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel, deadline)
     q0 = robot.configuration(start, field="start")
     for i in np.flatnonzero((q0 < robot.lower) | (q0 > robot.upper)):
         raise InvalidInputError(
@@ -336,6 +417,9 @@ def follow(
     else:
         points.append(PathPoint(q0.copy(), ep, er, 0.0))
     for k in range(1, len(poses)) if failure is None else ():
+        if deadline is not None and _clock() >= deadline:
+            failure = _timed_out(walk, k, float(ss[k]))
+            break
         out = walk.advance(poses[k], float(ss[k]))
         if out is not None:
             res, g, T, s = out

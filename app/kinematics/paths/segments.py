@@ -28,6 +28,7 @@ whose total length is zero (every segment ends where it starts) has only its sta
 
 from __future__ import annotations
 
+import bisect
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -43,6 +44,9 @@ ROTATION_LENGTH = 0.1
 MAX_POINTS = 100_000
 #: Segment length (m) below which a segment counts as zero-length (rounding of equal poses).
 ZERO_LENGTH = 1e-12
+#: A segment whose rotation turns less than this (rad) keeps its start's orientation
+#: exactly (no slerp): the pose it gives differs from the slerp's by less than this angle.
+NO_TURN = 1e-14
 #: Relative size of |(via − start) × (to − start)| below which the three arc points are
 #: collinear (or two coincide).
 COLLINEAR = 1e-9
@@ -63,9 +67,10 @@ class Arc:
     to: pin.SE3
 
 
-def _slerp(R0: np.ndarray, w: np.ndarray, t: float) -> np.ndarray:
-    """R0·exp3(t·w): the rotation a fraction ``t`` along the geodesic R0 → R0·exp3(w)."""
-    return R0 @ pin.exp3(t * w)
+def _slerp(R0: np.ndarray, w: np.ndarray, t: float, turns: bool = True) -> np.ndarray:
+    """R0·exp3(t·w): the rotation a fraction ``t`` along the geodesic R0 → R0·exp3(w)
+    (R0 itself when the geodesic does not ``turns``: ‖w‖ ≤ :data:`NO_TURN`)."""
+    return R0 @ pin.exp3(t * w) if turns else R0
 
 
 class _Piece:
@@ -73,7 +78,7 @@ class _Piece:
 
     def __init__(self, start: pin.SE3, seg: Line | Arc, field: str) -> None:
         self.start, self.end = start, seg.to
-        R0 = start.rotation
+        R0 = self.R0 = start.rotation.copy()
         if isinstance(seg, Line):
             self.arc = False
             self.p0, self.dp = start.translation.copy(), seg.to.translation - start.translation
@@ -132,9 +137,9 @@ class _Piece:
         else:
             p = self.p0 + u * self.dp
         if u <= self.u_via:
-            R = _slerp(self.start.rotation, self.w1, u / self.u_via)
+            R = _slerp(self.R0, self.w1, u / self.u_via, self.th1 > NO_TURN)
         else:
-            R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via))
+            R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via), self.th2 > NO_TURN)
         return pin.SE3(R, p)
 
     def steps(self, max_p: float, max_r: float) -> int:
@@ -167,6 +172,7 @@ class CartesianPath:
         if pieces and self.length > 0.0:
             self.ends[-1] = 1.0
         self._starts = np.concatenate(([0.0], self.ends[:-1]))
+        self._ends, self._starts_list = self.ends.tolist(), self._starts.tolist()
 
     @classmethod
     def from_segments(
@@ -195,12 +201,12 @@ class CartesianPath:
         """(segment index, its parameter u) at path parameter ``s``."""
         if self.length == 0.0:
             return len(self._pieces) - 1, 1.0
-        i = int(np.searchsorted(self.ends, s, side="left"))
+        i = bisect.bisect_left(self._ends, s)  # plain floats: searchsorted's "left"
         i = min(i, len(self._pieces) - 1)
         # Skip zero-length segments sharing this s (they end where the next starts).
         while i < len(self._pieces) - 1 and self._pieces[i].length == 0.0:
             i += 1
-        a, b = self._starts[i], self.ends[i]
+        a, b = self._starts_list[i], self._ends[i]
         return i, (1.0 if b <= a else (s - a) / (b - a))
 
     def pose_at(self, s: float) -> pin.SE3:
