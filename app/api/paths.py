@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+import time
 
 import numpy as np
 import pinocchio as pin
@@ -83,6 +84,7 @@ def _follow(
     rng: np.random.Generator | None,
     timing: TimingIn | None,
     grp: Group | None,
+    deadline: float,
     cancel: threading.Event | None = None,
 ) -> dict:
     res = follow(
@@ -94,6 +96,7 @@ def _follow(
         accept=accept_of(robot, collisions),
         rng=rng,
         cancel=cancel,
+        deadline=deadline,
     )
     record_ik(res.failure is None)
     failure = res.failure
@@ -164,7 +167,8 @@ async def solve_ik_path(
     cannot be completed is not an error: 200 with `fraction` < 1, the points up to there,
     and `failure` (index, reason, detail) of the first point that failed. See docs/paths.md.
     The request's total budget, points × `timeout_ms`, may not exceed the server's
-    `ik_max_request_s` (else 422 naming `max_step`); the work stops when the client leaves.
+    `ik_max_request_s` (else 422 naming `max_step`), which is also the path's deadline (past
+    it, the path stops with `failure.reason: timeout`); the work stops when the client leaves.
     """
     check_budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
@@ -201,5 +205,6 @@ async def solve_ik_path(
         rng_of(body),
         body.timing,
         grp,
+        time.perf_counter() + cap_s,
     )
     return ORJSONResponse(out)

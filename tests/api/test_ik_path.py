@@ -316,3 +316,15 @@ def test_timing_errors_name_the_field(client) -> None:
     problem(client.post("/robots/ur5/ik/path", json=body), 422, "timing.acceleration_limits")
     body = {**ISSUE_BODY, "timing": {"acceleration_limits": {"elbow": 1.0}}}
     problem(client.post("/robots/ur5/ik/path", json=body), 422, "timing.acceleration_limits.elbow")
+
+
+def test_the_request_budget_is_the_paths_deadline(client, monkeypatch) -> None:
+    """Past its deadline (now + ik_max_request_s) a path stops with reason timeout and the
+    points so far; a fake clock far in the future stands for a path that ran out of time."""
+    from app.kinematics.paths import follow
+
+    monkeypatch.setattr(follow, "_clock", lambda: 1e18)
+    out = client.post("/robots/ur5/ik/path", json=ISSUE_BODY).json()
+    f = out["failure"]
+    assert f["reason"] == "timeout" and "budget" in f["detail"], f
+    assert out["fraction"] == 0.0 and len(out["points"]) == 1 and f["index"] == 1
