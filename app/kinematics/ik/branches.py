@@ -83,6 +83,7 @@ class BranchForm:
     kind: str
     pin_ids: tuple[int, ...]
     axes: np.ndarray  # (k, 3) unit axes in each joint's frame
+    idx_v: tuple[int, ...] = ()  # the moving joints' columns of the Jacobian
     wrist: np.ndarray | None = None
     elbow: bool = False
     tip_axis4: bool = False
@@ -113,9 +114,10 @@ def _detect(robot: RobotModel, ch: IKChain) -> BranchForm | None:
         return None
     forms = ch.closed_form if ch.closed_form is not None else (None, None)
     pin_ids = tuple(j.pin_id for j in joints)
+    idx_v = tuple(int(model.joints[p].idx_v) for p in pin_ids)
     axes = np.array([np.asarray(j.axis, float) / np.linalg.norm(j.axis) for j in joints])
     if forms[1] is not None:  # the planar 2-link closed form applies
-        return BranchForm("planar2", pin_ids, axes)
+        return BranchForm("planar2", pin_ids, axes, idx_v)
     if len(joints) != 6:
         return None
     revolute = [j.type != "prismatic" for j in joints]
@@ -137,7 +139,7 @@ def _detect(robot: RobotModel, ch: IKChain) -> BranchForm | None:
             return None
     elbow = revolute[2] and _parallel(z[1], z[2])
     wrist_local = data.oMi[pin_ids[4]].actInv(c)
-    return BranchForm("6r", pin_ids, axes, wrist_local, elbow, ur)
+    return BranchForm("6r", pin_ids, axes, idx_v, wrist_local, elbow, ur)
 
 
 def branch_form(robot: RobotModel, ch: IKChain) -> BranchForm | None:
@@ -174,24 +176,38 @@ def branch_label(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None
     if form is None:
         return None
     model, data = robot.model, robot.data
-    pin.forwardKinematics(model, data, robot.to_pin(np.asarray(q, dtype=float)))
-    oMi = data.oMi
-    z = [(oMi[p].rotation @ a).tolist() for p, a in zip(form.pin_ids, form.axes, strict=True)]
-    o = [oMi[p].translation for p in form.pin_ids]
+    # One call gives every axis: column i of the world Jacobian is the joint's twist at the
+    # world origin, (v_i, z_i) with v_i = o_i × z_i, so z_i × v_i (unit z_i) is a point of
+    # axis i. Every flag below is unchanged by sliding o_i along its axis (each o_i enters a
+    # triple product with its own axis, or with a parallel one).
+    pin.computeJointJacobians(model, data, robot.to_pin(np.asarray(q, dtype=float)))
+    cols = data.J[:, form.idx_v].T.tolist()
+    z = [c[3:] for c in cols]
+    o = [_cross(c[3:], c[:3]) for c in cols]
     if form.kind == "planar2":
-        p = pin.updateFramePlacement(model, data, chain.frame_id).translation
-        up = _triple(z[0], (o[1] - o[0]).tolist(), (p - o[1]).tolist()) >= 0.0
+        p = pin.updateFramePlacement(model, data, chain.frame_id).translation.tolist()
+        up = _triple(z[0], _sub(o[1], o[0]), _sub(p, o[1])) >= 0.0
         return "elbow_up" if up else "elbow_down"
-    w = oMi[form.pin_ids[4]].act(form.wrist)
-    shoulder = _triple(z[0], z[1], (w - o[1]).tolist())
+    w = data.oMi[form.pin_ids[4]].act(form.wrist).tolist()
+    shoulder = _triple(z[0], z[1], _sub(w, o[1]))
     parts = ["shoulder_right" if shoulder >= 0.0 else "shoulder_left"]
     if form.elbow:
         t = o[3] if form.tip_axis4 else w
-        turn = _triple(z[1], (o[2] - o[1]).tolist(), (t - o[2]).tolist())
+        turn = _triple(z[1], _sub(o[2], o[1]), _sub(t, o[2]))
         parts.append("elbow_up" if turn * shoulder < 0.0 else "elbow_down")
     noflip = _triple(z[3], z[5], z[4]) >= 0.0
     parts.append("wrist_noflip" if noflip else "wrist_flip")
     return "/".join(parts)
+
+
+def _sub(a: list[float], b: list[float]) -> list[float]:
+    """a − b of two 3-vectors (plain floats)."""
+    return [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+
+
+def _cross(a: list[float], b: list[float]) -> list[float]:
+    """a × b of two 3-vectors (plain floats)."""
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
 def _triple(a: list[float], b: list[float], c: list[float]) -> float:
