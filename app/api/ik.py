@@ -15,6 +15,7 @@ from app.api.ik_request import (
     Collisions,
     accept_of,
     check_budget,
+    check_request_budget,
     clearance_of,
     collisions_of,
     options_of,
@@ -207,15 +208,14 @@ async def solve_ik_batch(
         raise InvalidInputError(
             f"{len(body.targets)} targets exceed the limit of {limit}", "targets"
         )
-    total_s = len(body.targets) * body.timeout_ms * 1e-3
-    cap_s = request.app.state.settings.ik_max_request_s
-    if total_s > cap_s:
-        raise InvalidInputError(
-            f"{len(body.targets)} targets × {body.timeout_ms:g} ms = {total_s:g} s exceeds the "
-            f"server's budget of {cap_s:g} s per request: send fewer targets per request, or "
-            "a smaller timeout_ms",
-            "targets",
-        )
+    check_request_budget(
+        request,
+        len(body.targets),
+        "targets",
+        body.timeout_ms,
+        "send fewer targets per request, or a smaller timeout_ms",
+        "targets",
+    )
     robot = await load_robot(reg, robot_id)
     options = options_of(robot, body)
     collisions = collisions_of(request, body)

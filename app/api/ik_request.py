@@ -38,6 +38,22 @@ def check_budget(request: Request, timeout_ms: float) -> None:
         )
 
 
+def check_request_budget(
+    request: Request, count: int, noun: str, timeout_ms: float, remedy: str, field: str
+) -> None:
+    """Refuse a request whose total budget, ``count`` solves × ``timeout_ms``, exceeds the
+    server's ``ik_max_request_s`` (InvalidInputError naming ``field``; ``noun`` names what is
+    counted, ``remedy`` says how to stay within it)."""
+    total_s = count * timeout_ms * 1e-3
+    cap_s = request.app.state.settings.ik_max_request_s
+    if total_s > cap_s:
+        raise InvalidInputError(
+            f"{count} {noun} × {timeout_ms:g} ms = {total_s:g} s exceeds the server's budget "
+            f"of {cap_s:g} s per request: {remedy}",
+            field,
+        )
+
+
 #: What collision-aware IK checks a solution against: obstacles (root frame), clearance (m),
 #: and the collision geometry (``mesh`` or ``convex``).
 Collisions = tuple[tuple[Obstacle, ...], float, str]

@@ -15,6 +15,7 @@ from app.api.ik_request import (
     Collisions,
     accept_of,
     check_budget,
+    check_request_budget,
     collisions_of,
     options_of,
     rng_of,
@@ -183,16 +184,14 @@ async def solve_ik_path(
     grp = group(robot, body.group)
     start = group_seed(robot, grp, body.start, "start")
     path = _path(body, start_pose(robot, start, ik_options))
-    points = len(path.sample(options.max_step)[0])
-    total_s = points * body.timeout_ms * 1e-3
-    cap_s = request.app.state.settings.ik_max_request_s
-    if total_s > cap_s:
-        raise InvalidInputError(
-            f"{points} points × {body.timeout_ms:g} ms = {total_s:g} s exceeds the server's "
-            f"budget of {cap_s:g} s per request: a larger max_step, a shorter path or a "
-            "smaller timeout_ms",
-            "max_step",
-        )
+    check_request_budget(
+        request,
+        len(path.sample(options.max_step)[0]),
+        "points",
+        body.timeout_ms,
+        "a larger max_step, a shorter path or a smaller timeout_ms",
+        "max_step",
+    )
     out = await offload_cancellable(
         request,
         _follow,

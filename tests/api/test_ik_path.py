@@ -3,20 +3,18 @@ the failure contract, the branch guard, determinism across workers, the error co
 
 from __future__ import annotations
 
-import io
 import math
 
 import httpx
 import numpy as np
 import pytest
-import yourdfpy
 from scipy.spatial.transform import Rotation
 
 from app.kinematics.collision import collision_filter
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.obstacles import parse_obstacle
 from tests.helpers import problem, serve
-from tests.kinematics.reference import pose_error, reference_pose
+from tests.kinematics.reference import pose_error, reference_pose, reference_velocity_limits
 
 UR5_START = [0.1, -1.4, 1.2, -0.5, 1.0, 0.3]
 #: The issue's request, as written.
@@ -290,11 +288,7 @@ def test_timing_respects_the_limits_at_every_point(client, registry) -> None:
     out = client.post("/robots/ur5/ik/path", json=body).json()
     assert out["fraction"] == 1.0, out["failure"]
     tm = out["timing"]
-    urdf = yourdfpy.URDF.load(
-        io.BytesIO(registry.get("ur5").urdf_text.encode()), load_meshes=False,
-        build_collision_scene_graph=False, load_collision_meshes=False,
-    )  # fmt: skip
-    vmax = np.array([urdf.joint_map[j].limit.velocity for j in out["joint_names"]])
+    vmax = reference_velocity_limits(registry.get("ur5"), out["joint_names"])
     t = np.array(tm["t"])
     q = np.array([p["q"] for p in out["points"]])
     v, a = np.array(tm["velocities"]), np.array(tm["accelerations"])

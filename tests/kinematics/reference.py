@@ -35,6 +35,12 @@ def reference_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.ndarray:
     return urdf.get_transform(frame, urdf.base_link)
 
 
+def reference_velocity_limits(robot: RobotModel, joints: list[str]) -> np.ndarray:
+    """The URDF ``<limit velocity>`` of each joint of ``joints`` by yourdfpy (rad/s, m/s)."""
+    urdf = _urdf(robot)
+    return np.array([urdf.joint_map[name].limit.velocity for name in joints])
+
+
 def _chain(robot: RobotModel, frame: str) -> list[tuple[object, int | None]]:
     """The yourdfpy joints from the base link to link ``frame``, each with its index in the
     wire configuration (None: not actuated)."""

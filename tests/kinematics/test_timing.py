@@ -4,7 +4,6 @@ trajectory, and limits read from the URDF (yourdfpy) and the DH table (YAML)."""
 
 from __future__ import annotations
 
-import io
 import math
 import subprocess
 import sys
@@ -13,7 +12,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-import yourdfpy
 from pydantic import ValidationError
 
 from app.api.timing_schemas import TimingIn, timing_of
@@ -22,6 +20,7 @@ from app.kinematics.models import RobotModel
 from app.kinematics.paths import timing as timing_mod
 from app.kinematics.paths.timing import parameterize, toppra_modules
 from tests.kinematics.chains import continuous_arm, planar_2link, rrp_like
+from tests.kinematics.reference import reference_velocity_limits
 
 ROOT = Path(__file__).resolve().parents[2]
 #: Relative slack on a limit (rounding of the answer; the module verifies to rounding).
@@ -232,10 +231,7 @@ def test_velocity_scale_scales_the_velocity_limits(registry) -> None:
 # ---------------------------------------------------------------------- description limits
 def test_ur5_velocity_limits_come_from_its_urdf(registry) -> None:
     robot = registry.get("ur5")
-    urdf = yourdfpy.URDF.load(
-        io.BytesIO(robot.urdf_text.encode()), load_meshes=False, build_scene_graph=False
-    )
-    expected = [urdf.joint_map[name].limit.velocity for name in robot.joint_names]
+    expected = reference_velocity_limits(robot, robot.joint_names)
     qs = np.outer(np.linspace(0.0, 1.0, 30), [2.0, -1.5, 1.0, 2.5, 0.5, 1.2])
     result = parameterize(robot, qs, acceleration_limits=[1000.0] * 6)
     np.testing.assert_allclose(result.velocity_limits, expected, rtol=1e-15)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import TypedDict, Unpack
+from typing import TypedDict
 
 import numpy as np
 
@@ -98,8 +98,8 @@ def description_velocity(robot: RobotModel, index: int) -> float | None:
 
 
 class LimitOptions(TypedDict, total=False):
-    """The limit options of a timed path (keywords of :func:`joint_limits` and of
-    :func:`app.kinematics.paths.timing.parameterize`)."""
+    """The limit options of a timed path: the keywords
+    :func:`app.kinematics.paths.timing.parameterize` passes on to :func:`joint_limits`."""
 
     velocity_limits: Sequence[float] | Mapping[str, float] | None
     acceleration_limits: Sequence[float] | Mapping[str, float] | None
@@ -109,7 +109,15 @@ class LimitOptions(TypedDict, total=False):
 
 
 def joint_limits(
-    robot: RobotModel, moving: np.ndarray, *, field: str = "timing", **options: Unpack[LimitOptions]
+    robot: RobotModel,
+    moving: np.ndarray,
+    *,
+    field: str = "timing",
+    velocity_limits: Sequence[float] | Mapping[str, float] | None = None,
+    acceleration_limits: Sequence[float] | Mapping[str, float] | None = None,
+    acceleration_fraction: float | None = None,
+    velocity_scale: float = 1.0,
+    joints: Sequence[int] | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """The velocity and acceleration limits of the moving joints, (n,) each, NaN elsewhere.
 
@@ -120,28 +128,20 @@ def joint_limits(
     a fraction ``f`` gives ``a_max = f · v_max / (1 s)``. Errors name
     ``<field>.velocity_limits.<i or joint>`` and the like.
     """
-    unknown = set(options) - set(LimitOptions.__annotations__)
-    if unknown:
-        raise TypeError(f"unknown limit options: {', '.join(sorted(unknown))}")
-    joints = options.get("joints")
-    velocity_limits = options.get("velocity_limits")
-    acceleration_limits = options.get("acceleration_limits")
-    acceleration_fraction = options.get("acceleration_fraction")
-    velocity_scale = float(options.get("velocity_scale", 1.0))
+    velocity_scale = float(velocity_scale)
+    fraction_field = f"{field}.acceleration_fraction"
     sel = np.arange(robot.n) if joints is None else np.asarray(joints, dtype=int)
     if acceleration_limits is not None and acceleration_fraction is not None:
         raise InvalidInputError(
-            "give either acceleration_limits or acceleration_fraction, not both",
-            f"{field}.acceleration_fraction",
+            "give either acceleration_limits or acceleration_fraction, not both", fraction_field
         )
     fraction = DEFAULT_ACCELERATION_FRACTION
     if acceleration_fraction is not None:
         fraction = float(acceleration_fraction)
         if not (math.isfinite(fraction) and fraction > 0.0):
             raise InvalidInputError(
-                f"must be a finite number > 0 (got {fraction:g})", f"{field}.acceleration_fraction"
+                f"must be a finite number > 0 (got {fraction:g})", fraction_field
             )
-    fraction_field = f"{field}.acceleration_fraction"
     if not (math.isfinite(velocity_scale) and 0.0 < velocity_scale <= 1.0):
         raise InvalidInputError(
             f"must lie in (0, 1] (got {velocity_scale:g})", f"{field}.velocity_scale"

@@ -87,7 +87,6 @@ class Timing:
     t : (N,) times (s) from the first point (``t[0] = 0``), non-decreasing.
     qd, qdd : (N, n) joint velocities (rad/s, m/s) and accelerations (rad/s², m/s²), in wire
         (joint) order; 0 for the joints that do not move along the path.
-    duration : ``t[-1]`` (s).
     velocity_limits, acceleration_limits : (n,) the limits applied (rad/s or m/s, rad/s² or
         m/s²); NaN for the joints that do not move (none applied).
     time_scale : the uniform slow-down applied after verification (1.0: TOPP-RA's motion
@@ -97,10 +96,14 @@ class Timing:
     t: np.ndarray
     qd: np.ndarray
     qdd: np.ndarray
-    duration: float
     velocity_limits: np.ndarray
     acceleration_limits: np.ndarray
     time_scale: float
+
+    @property
+    def duration(self) -> float:
+        """Time of the last point, ``t[-1]`` (s)."""
+        return float(self.t[-1])
 
 
 def toppra_modules() -> tuple[Any, Any, Any]:
@@ -313,7 +316,7 @@ def parameterize(
     walked = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(sub, axis=0), axis=1))])
     keep = _distinct(walked)
     if keep.size < 2:
-        return Timing(np.zeros(n_pts), zeros, zeros.copy(), 0.0, v, a, 1.0)
+        return Timing(np.zeros(n_pts), zeros, zeros.copy(), v, a, 1.0)
     knots = walked[keep]
     s_pts = knots[np.searchsorted(keep, np.arange(n_pts), side="right") - 1]
 
@@ -356,4 +359,4 @@ def parameterize(
     qd[:, moving] = qd_m * (length / time)
     qdd[:, moving] = qdd_m * (length / time**2)
     t = t_pts * time
-    return Timing(t, qd, qdd, float(t[-1]), v, a, scale)
+    return Timing(t, qd, qdd, v, a, scale)
