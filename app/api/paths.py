@@ -186,7 +186,7 @@ async def solve_ik_path(
     path = _path(body, start_pose(robot, start, ik_options))
     check_request_budget(
         request,
-        len(path.sample(options.max_step)[0]),
+        path.count(options.max_step),
         "points",
         body.timeout_ms,
         "a larger max_step, a shorter path or a smaller timeout_ms",
@@ -204,6 +204,6 @@ async def solve_ik_path(
         rng_of(body),
         body.timing,
         grp,
-        time.perf_counter() + cap_s,
+        time.perf_counter() + request.app.state.settings.ik_max_request_s,
     )
     return ORJSONResponse(out)

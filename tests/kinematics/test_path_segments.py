@@ -145,6 +145,7 @@ def test_sample_bounds_steps_and_keeps_ends_exact(step: tuple[float, float]) -> 
         for P in poses
     )
     assert dup == 1
+    assert path.count(step) == len(poses)  # the route's budget check counts without sampling
 
 
 def test_a_path_of_zero_length_is_its_start() -> None:

@@ -234,6 +234,22 @@ class CartesianPath:
             its end pose (a zero-length segment adds nothing). At most :data:`MAX_POINTS`
             points, else InvalidInputError naming ``max_step``.
         """
+        counts = self._counts(max_step)
+        poses, ss = [self.start.copy()], [0.0]
+        for piece, n, a, b in zip(self._pieces, counts, self._starts, self.ends, strict=True):
+            for k in range(1, n + 1):
+                u = k / n
+                poses.append(piece.pose(u))
+                ss.append(b if k == n else a + u * (b - a))
+        return poses, np.array(ss)
+
+    def count(self, max_step: tuple[float, float]) -> int:
+        """How many poses :meth:`sample` gives for ``max_step`` (none built; the same
+        InvalidInputError beyond :data:`MAX_POINTS`)."""
+        return 1 + sum(self._counts(max_step))
+
+    def _counts(self, max_step: tuple[float, float]) -> list[int]:
+        """Steps of each segment at ``max_step``, their total checked against MAX_POINTS."""
         max_p, max_r = (float(v) for v in max_step)
         check_max_step(max_p, max_r, "max_step")
         counts = [p.steps(max_p, max_r) for p in self._pieces]
@@ -244,13 +260,7 @@ class CartesianPath:
                 "raise max_step",
                 "max_step",
             )
-        poses, ss = [self.start.copy()], [0.0]
-        for piece, n, a, b in zip(self._pieces, counts, self._starts, self.ends, strict=True):
-            for k in range(1, n + 1):
-                u = k / n
-                poses.append(piece.pose(u))
-                ss.append(b if k == n else a + u * (b - a))
-        return poses, np.array(ss)
+        return counts
 
 
 def check_max_step(position: float, rotation: float, field: str) -> None:
