@@ -47,6 +47,7 @@ Reasons, in the order they are tested
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -173,6 +174,16 @@ def unreachable_detail(
     )
 
 
+def outside_limits(robot: RobotModel, q: np.ndarray, joints: Iterable[int]) -> str:
+    """``"<joint> = <value> outside [<lower>, <upper>]"`` for each of the wire indices
+    ``joints`` whose value in ``q`` lies outside its limits, joined by ``"; "`` ("" if none)."""
+    return "; ".join(
+        f"{robot.joints[i].name} = {q[i]:.6g} outside [{robot.lower[i]:.6g}, {robot.upper[i]:.6g}]"
+        for i in joints
+        if q[i] < robot.lower[i] or q[i] > robot.upper[i]
+    )
+
+
 def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The weighted task Jacobian J_e (active columns), the weighted task error and the full
     error e = [p − p_t; log3(R R_tᵀ)] at wire ``q``."""
@@ -205,14 +216,7 @@ def _unconstrained(s: Search, q: np.ndarray) -> str | None:
             return None
         ep, er = s._checked(e)
         if ep <= s.tol_p and er <= s.tol_r:
-            robot = s.robot
-            bad = [
-                f"{robot.joints[i].name} = {q[i]:.6g} outside [{robot.lower[i]:.6g}, "
-                f"{robot.upper[i]:.6g}]"
-                for i in active
-                if q[i] < robot.lower[i] or q[i] > robot.upper[i]
-            ]
-            return "; ".join(bad) or None
+            return outside_limits(s.robot, q, active) or None
         lam2 = 1e-6 + 1e-3 * float(et @ et)
         A = Je @ Je.T + lam2 * np.eye(Je.shape[0])
         q[active] -= Je.T @ np.linalg.solve(A, et)

@@ -22,7 +22,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, InvalidInputError
-from app.kinematics.ik.failure import classify
+from app.kinematics.ik.failure import classify, outside_limits
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
 from app.kinematics.ik.ranking import Grouping, joint_distance, representatives, wrap_angle
@@ -210,17 +210,9 @@ class Search:
         model, data = robot.model, robot.data
         pin.forwardKinematics(model, data, robot.to_pin(q))
         T = pin.updateFramePlacement(model, data, self.ch.frame_id)
-        e = np.concatenate(
-            (T.translation - self.target.translation, pin.log3(T.rotation @ self.target.rotation.T))
-        )
-        ep, er = self._checked(e)
+        ep, er = self._checked(pose_errors(T, self.target)[2])
         if ep <= self.tol_p and er <= self.tol_r:
-            bad = [
-                f"{j.name} = {v:.6g} outside [{j.lower:.6g}, {j.upper:.6g}]"
-                for j, v, lo, hi in zip(robot.joints, q, robot.lower, robot.upper, strict=True)
-                if v < lo or v > hi
-            ]
-            self.outside_limits = "; ".join(bad)
+            self.outside_limits = outside_limits(robot, q, range(robot.n))
 
     def _checked(self, e: np.ndarray) -> tuple[float, float]:
         """Position and orientation errors over the checked (positive-weight) rows."""
