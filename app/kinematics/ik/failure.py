@@ -61,7 +61,6 @@ if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
     from app.kinematics.models import RobotModel
 
-REASONS = ("unreachable", "joint_limits", "collision", "singular", "timeout")
 #: σ_min of the best iterate's task Jacobian below this: ``singular`` (m/rad or rad/rad).
 SINGULAR_SIGMA = 1e-3
 #: A joint pinned at a limit counts when its gradient component is at least this share of
