@@ -87,6 +87,14 @@ def random_q(robot: RobotModel, rng: np.random.Generator) -> np.ndarray:
     return rng.uniform(lo, hi)
 
 
+def within_limits(robot: RobotModel, q: np.ndarray) -> bool:
+    """Whether every joint of wire ``q`` lies within its URDF limits (1e-12 slack)."""
+    return all(
+        j.continuous or (j.lower - 1e-12 <= v <= j.upper + 1e-12)
+        for j, v in zip(robot.joints, q, strict=True)
+    )
+
+
 def se3(T: np.ndarray) -> pin.SE3:
     return pin.SE3(T[:3, :3].copy(), T[:3, 3].copy())
 

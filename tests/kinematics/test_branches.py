@@ -23,7 +23,15 @@ from app.kinematics.ik.problem import IKOptions
 from app.kinematics.ik.ranking import CLUSTER_THRESHOLD, Grouping
 from app.kinematics.models import RobotModel
 from tests.kinematics.chains import planar_2link
-from tests.kinematics.reference import TOL, _urdf, pose_error, random_q, reference_pose, se3
+from tests.kinematics.reference import (
+    TOL,
+    _urdf,
+    pose_error,
+    random_q,
+    reference_pose,
+    se3,
+    within_limits,
+)
 
 BUDGET_MS = 5000.0
 #: A generic UR5 configuration (no joint near a singularity) and its pose.
@@ -35,13 +43,6 @@ def _frames(robot: RobotModel, q: np.ndarray, links: list[str]) -> list[np.ndarr
     urdf = _urdf(robot)
     urdf.update_cfg(q)
     return [urdf.get_transform(link, urdf.base_link) for link in links]
-
-
-def _within_limits(robot: RobotModel, q: np.ndarray) -> bool:
-    return all(
-        j.continuous or (j.lower - 1e-12 <= v <= j.upper + 1e-12)
-        for j, v in zip(robot.joints, q, strict=True)
-    )
 
 
 # ----------------------------------------------------------------------------- UR5 flags
@@ -126,7 +127,7 @@ def test_ur5_eight_closed_form_solutions_have_eight_labels(registry) -> None:
         for s, e, w in itertools.product(("left", "right"), ("up", "down"), ("flip", "noflip"))
     }
     for sol in res.solutions:
-        assert _within_limits(robot, sol.q)
+        assert within_limits(robot, sol.q)
         dp, dr = pose_error(reference_pose(robot, sol.q, "tool0"), target)
         assert dp <= TOL and dr <= TOL
         ref = _ur5_reference_flags(robot, sol.q)
@@ -314,7 +315,7 @@ def test_joint_limits_reason_closed_form_and_numeric() -> None:
         res = ik.solve(robot, pin.SE3(np.eye(3), target), options)
         assert not res.success and res.reason == "joint_limits", (analytic, res.detail)
         assert "j2" in res.detail
-        assert _within_limits(robot, res.q)
+        assert within_limits(robot, res.q)
 
 
 def test_singular_reason_at_a_stretched_arm() -> None:

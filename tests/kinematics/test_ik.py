@@ -23,7 +23,14 @@ from app.kinematics.ik.problem import IKOptions, IKProblem
 from app.kinematics.ik.search import DISTINCT, Search
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
-from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
+from tests.kinematics.reference import (
+    TOL,
+    pose_error,
+    random_q,
+    reference_pose,
+    se3,
+    within_limits,
+)
 
 BUDGET_MS = 500.0
 
@@ -34,13 +41,6 @@ CHAINS = [
     ("ur5", "tool0", False),
     ("puma560", "tool", True),
 ]
-
-
-def within_limits(robot: RobotModel, q: np.ndarray) -> bool:
-    return all(
-        j.continuous or (j.lower - 1e-12 <= v <= j.upper + 1e-12)
-        for j, v in zip(robot.joints, q, strict=True)
-    )
 
 
 @pytest.mark.parametrize("angle", [1e-13, 3e-9, 0.5, 3.0])

@@ -145,12 +145,9 @@ def _detect(robot: RobotModel, ch: IKChain) -> BranchForm | None:
 def branch_form(robot: RobotModel, ch: IKChain) -> BranchForm | None:
     """The chain's :class:`BranchForm` (None: no branch flags), detected once and cached on
     the chain (``ch.branch_form``; idempotent, so concurrent first uses are benign)."""
-    cached = getattr(ch, "branch_form", False)
-    if cached is not False:
-        return cached
-    form = _detect(robot, ch)
-    ch.branch_form = form
-    return form
+    if ch.branch_form is False:
+        ch.branch_form = _detect(robot, ch)
+    return ch.branch_form
 
 
 def branch_label(robot: RobotModel, chain: IKChain, q: np.ndarray) -> str | None:

@@ -47,6 +47,7 @@ Reasons, in the order they are tested
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -60,7 +61,6 @@ if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
     from app.kinematics.models import RobotModel
 
-REASONS = ("unreachable", "joint_limits", "collision", "singular", "timeout")
 #: σ_min of the best iterate's task Jacobian below this: ``singular`` (m/rad or rad/rad).
 SINGULAR_SIGMA = 1e-3
 #: A joint pinned at a limit counts when its gradient component is at least this share of
@@ -80,50 +80,51 @@ _REVOLUTE = {
 _PRISMATIC = {"JointModelPX", "JointModelPY", "JointModelPZ", "JointModelPrismaticUnaligned"}
 
 
-def _reach_parts(robot: RobotModel, ch: IKChain) -> tuple[np.ndarray, float, tuple] | None:
-    """(b, the seed-independent part of R, (pin id, wire index) of held prismatic joints),
-    or None when the chain has no bound. Cached on the chain."""
-    cached = getattr(ch, "reach_parts", False)
-    if cached is not False:
-        return cached
+#: (b, the seed-independent part of R, wire indices of held prismatic joints).
+ReachParts = tuple[np.ndarray, float, tuple[int, ...]]
+
+
+def _reach_parts(robot: RobotModel, ch: IKChain) -> ReachParts | None:
+    """(b, the seed-independent part of R, wire indices of held prismatic joints), or None
+    when the chain has no bound. Cached on the chain."""
+    if ch.reach_parts is False:
+        ch.reach_parts = _reach_parts_of(robot, ch)
+    return ch.reach_parts
+
+
+def _reach_parts_of(robot: RobotModel, ch: IKChain) -> ReachParts | None:
+    """:func:`_reach_parts`, computed."""
     model = robot.model
     fr = model.frames[ch.frame_id]
     path = [int(j) for j in model.supports[fr.parentJoint] if int(j) > 0]
+    if not path:
+        return None
     by_pin = {j.pin_id: j for j in robot.joints}
     active = {int(w): i for i, w in enumerate(ch.active)}  # wire index → active position
-    parts: tuple[np.ndarray, float, tuple] | None = None
-    if path:
-        total = float(np.linalg.norm(fr.placement.translation))
-        held: list[tuple[int, int]] = []
-        ok = True
-        for k, jid in enumerate(path):
-            name = model.joints[jid].shortname()
-            if k > 0:
-                total += float(np.linalg.norm(model.jointPlacements[jid].translation))
-            if name in _REVOLUTE:
-                continue
-            if name not in _PRISMATIC:
-                ok = False
-                break
-            joint = by_pin.get(jid)
-            if joint is None:  # a mimic follower: its own limits, from the model
-                lo = model.lowerPositionLimit[model.idx_qs[jid]]
-                hi = model.upperPositionLimit[model.idx_qs[jid]]
-            elif joint.index in active:
-                lo, hi = ch.lower[active[joint.index]], ch.upper[active[joint.index]]
-            else:
-                held.append((jid, joint.index))
-                continue
-            travel = max(abs(float(lo)), abs(float(hi)))
-            if not math.isfinite(travel) or travel > MAX_JOINT_VALUE:
-                ok = False
-                break
-            total += travel
-        if ok:
-            b = model.jointPlacements[path[0]].translation.copy()
-            parts = (b, total, tuple(held))
-    ch.reach_parts = parts
-    return parts
+    total = float(np.linalg.norm(fr.placement.translation))
+    held: list[int] = []
+    for k, jid in enumerate(path):
+        name = model.joints[jid].shortname()
+        if k > 0:
+            total += float(np.linalg.norm(model.jointPlacements[jid].translation))
+        if name in _REVOLUTE:
+            continue
+        if name not in _PRISMATIC:
+            return None
+        joint = by_pin.get(jid)
+        if joint is None:  # a mimic follower: its own limits, from the model
+            lo = model.lowerPositionLimit[model.idx_qs[jid]]
+            hi = model.upperPositionLimit[model.idx_qs[jid]]
+        elif joint.index in active:
+            lo, hi = ch.lower[active[joint.index]], ch.upper[active[joint.index]]
+        else:
+            held.append(joint.index)
+            continue
+        travel = max(abs(float(lo)), abs(float(hi)))
+        if not math.isfinite(travel) or travel > MAX_JOINT_VALUE:
+            return None
+        total += travel
+    return model.jointPlacements[path[0]].translation.copy(), total, tuple(held)
 
 
 def reach_bound(
@@ -135,7 +136,7 @@ def reach_bound(
     if parts is None:
         return None
     b, total, held = parts
-    for _, wire in held:
+    for wire in held:
         total += abs(float(seed[wire]))
     return b, total
 
@@ -173,6 +174,16 @@ def unreachable_detail(
     )
 
 
+def outside_limits(robot: RobotModel, q: np.ndarray, joints: Iterable[int]) -> str:
+    """``"<joint> = <value> outside [<lower>, <upper>]"`` for each of the wire indices
+    ``joints`` whose value in ``q`` lies outside its limits, joined by ``"; "`` ("" if none)."""
+    return "; ".join(
+        f"{robot.joints[i].name} = {q[i]:.6g} outside [{robot.lower[i]:.6g}, {robot.upper[i]:.6g}]"
+        for i in joints
+        if q[i] < robot.lower[i] or q[i] > robot.upper[i]
+    )
+
+
 def _task_jacobian(s: Search, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The weighted task Jacobian J_e (active columns), the weighted task error and the full
     error e = [p − p_t; log3(R R_tᵀ)] at wire ``q``."""
@@ -205,14 +216,7 @@ def _unconstrained(s: Search, q: np.ndarray) -> str | None:
             return None
         ep, er = s._checked(e)
         if ep <= s.tol_p and er <= s.tol_r:
-            robot = s.robot
-            bad = [
-                f"{robot.joints[i].name} = {q[i]:.6g} outside [{robot.lower[i]:.6g}, "
-                f"{robot.upper[i]:.6g}]"
-                for i in active
-                if q[i] < robot.lower[i] or q[i] > robot.upper[i]
-            ]
-            return "; ".join(bad) or None
+            return outside_limits(s.robot, q, active) or None
         lam2 = 1e-6 + 1e-3 * float(et @ et)
         A = Je @ Je.T + lam2 * np.eye(Je.shape[0])
         q[active] -= Je.T @ np.linalg.solve(A, et)

@@ -56,7 +56,12 @@ if TYPE_CHECKING:
 #: one cluster (single linkage).
 CLUSTER_THRESHOLD = 0.5
 
-_TWO_PI = 2.0 * np.pi
+_TWO_PI = 2.0 * math.pi
+
+
+def wrap_angle(x: np.ndarray) -> np.ndarray:
+    """Angles wrapped to [−π, π)."""
+    return (x + math.pi) % _TWO_PI - math.pi
 
 
 def joint_distance(robot: RobotModel, a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -64,13 +69,8 @@ def joint_distance(robot: RobotModel, a: np.ndarray, b: np.ndarray) -> np.ndarra
     d = np.abs(a - b)
     if robot.has_continuous:
         c = robot._cont_wire
-        d[c] = np.abs((a[c] - b[c] + np.pi) % _TWO_PI - np.pi)
+        d[c] = np.abs(wrap_angle(a[c] - b[c]))
     return d
-
-
-def seed_distance(robot: RobotModel, q: np.ndarray, seed: np.ndarray) -> float:
-    """The largest single-joint move from ``seed`` to ``q`` (rad or m), not the sum."""
-    return float(joint_distance(robot, q, seed).max(initial=0.0))
 
 
 class Grouping:

@@ -22,10 +22,10 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, InvalidInputError
-from app.kinematics.ik.failure import classify
+from app.kinematics.ik.failure import classify, outside_limits
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
-from app.kinematics.ik.ranking import Grouping, joint_distance, representatives
+from app.kinematics.ik.ranking import Grouping, joint_distance, representatives, wrap_angle
 
 #: Two solutions are distinct when some joint differs by more than this (rad or m).
 DISTINCT = 1e-3
@@ -34,8 +34,6 @@ NEAREST = 32
 #: The loops jump from the seed to the nearest table sample at once when that sample's pose
 #: is much closer to the target (distance ratio below this; see ``dls.NEAREST_FIRST``).
 NEAREST_RATIO = 0.5
-
-_TWO_PI = 2.0 * math.pi
 
 
 @dataclass(slots=True)
@@ -84,11 +82,6 @@ def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
     ep = T.translation - target.translation
     eR = pin.log3(T.rotation @ target.rotation.T)
     return math.hypot(*ep), math.hypot(*eR), np.concatenate([ep, eR])
-
-
-def wrap_angle(x: np.ndarray) -> np.ndarray:
-    """Angles wrapped to [−π, π)."""
-    return (x + math.pi) % _TWO_PI - math.pi
 
 
 class Search:
@@ -217,17 +210,9 @@ class Search:
         model, data = robot.model, robot.data
         pin.forwardKinematics(model, data, robot.to_pin(q))
         T = pin.updateFramePlacement(model, data, self.ch.frame_id)
-        e = np.concatenate(
-            (T.translation - self.target.translation, pin.log3(T.rotation @ self.target.rotation.T))
-        )
-        ep, er = self._checked(e)
+        ep, er = self._checked(pose_errors(T, self.target)[2])
         if ep <= self.tol_p and er <= self.tol_r:
-            bad = [
-                f"{j.name} = {v:.6g} outside [{j.lower:.6g}, {j.upper:.6g}]"
-                for j, v, lo, hi in zip(robot.joints, q, robot.lower, robot.upper, strict=True)
-                if v < lo or v > hi
-            ]
-            self.outside_limits = "; ".join(bad)
+            self.outside_limits = outside_limits(robot, q, range(robot.n))
 
     def _checked(self, e: np.ndarray) -> tuple[float, float]:
         """Position and orientation errors over the checked (positive-weight) rows."""
