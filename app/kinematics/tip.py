@@ -31,14 +31,14 @@ from xml.etree.ElementTree import Element
 
 import pinocchio as pin
 
-_PRISMATIC = {"JointModelPX", "JointModelPY", "JointModelPZ", "JointModelPrismaticUnaligned"}
+from app.kinematics.joint_types import PRISMATIC_MODELS
 
 
 def _gripper_joints(model: pin.Model) -> set[int]:
     """Joint ids of the gripper joints (module doc): prismatic, mimic followers, leaders."""
     ids = {int(j) for j in model.mimicking_joints} | {int(j) for j in model.mimicked_joints}
     for jid in range(1, model.njoints):
-        if model.joints[jid].shortname() in _PRISMATIC:
+        if model.joints[jid].shortname() in PRISMATIC_MODELS:
             ids.add(jid)
     return ids
 

@@ -53,6 +53,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics.joint_types import PRISMATIC_MODELS, REVOLUTE_MODELS
 from app.kinematics.models import MAX_JOINT_VALUE
 
 if TYPE_CHECKING:
@@ -72,12 +73,6 @@ UNREACHABLE_ITERATIONS = 60
 UNCONSTRAINED_ITERATIONS = 100
 #: Relative slack on the reach bound (rounding of the sums).
 REACH_SLACK = 1e-9
-
-_REVOLUTE = {
-    "JointModelRX", "JointModelRY", "JointModelRZ", "JointModelRevoluteUnaligned",
-    "JointModelRUBX", "JointModelRUBY", "JointModelRUBZ", "JointModelRevoluteUnboundedUnaligned",
-}  # fmt: skip
-_PRISMATIC = {"JointModelPX", "JointModelPY", "JointModelPZ", "JointModelPrismaticUnaligned"}
 
 
 #: (b, the seed-independent part of R, wire indices of held prismatic joints).
@@ -107,9 +102,9 @@ def _reach_parts_of(robot: RobotModel, ch: IKChain) -> ReachParts | None:
         name = model.joints[jid].shortname()
         if k > 0:
             total += float(np.linalg.norm(model.jointPlacements[jid].translation))
-        if name in _REVOLUTE:
+        if name in REVOLUTE_MODELS:
             continue
-        if name not in _PRISMATIC:
+        if name not in PRISMATIC_MODELS:
             return None
         joint = by_pin.get(jid)
         if joint is None:  # a mimic follower: its own limits, from the model
