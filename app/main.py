@@ -33,6 +33,7 @@ from app.documents.xacro import XacroLimits
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import procwatch
 from app.kinematics.ik.compiled import warm_up as warm_up_ik
+from app.kinematics.ik_batch import shutdown_pool as stop_ik_batch_workers
 from app.kinematics.xmldoc import XmlLimits
 from app.logs import configure_logging
 from app.methods import MethodsMiddleware
@@ -82,6 +83,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     threading.Thread(target=warm_up_ik, name="ik-warm-up", daemon=True).start()
     procwatch.exit_with_supervisor(settings.graceful_timeout_s + 5)  # no worker outlives it
     yield
+    stop_ik_batch_workers()
     log.info("denavit stopped")
 
 

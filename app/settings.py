@@ -109,6 +109,14 @@ class Settings(BaseSettings):
         "Cartesian path's, points × timeout_ms (also its deadline): one request cannot hold a "
         "pool worker longer.",
     )
+    ik_batch_processes: int | None = Field(
+        None,
+        ge=1,
+        le=256,
+        description="Worker processes of one server worker for IK batches with chain_seeds "
+        "false (each uvicorn worker has its own pool: workers × this many processes); 1 "
+        "solves them in the request's thread; default every core the process may use.",
+    )
     graceful_timeout_s: int = Field(
         8,
         ge=0,

@@ -31,6 +31,7 @@ def test_defaults(clean_env) -> None:
     assert s.api_token is None and s.cors_origins == [] and s.access_log is True
     assert s.max_body_bytes == 64 * 1024 * 1024 and s.max_batch == 100_000
     assert s.log_level == "info" and s.ik_max_timeout_ms == 1000.0
+    assert s.ik_batch_processes is None  # every core the process may use
 
 
 def test_every_variable_is_read(clean_env, tmp_path) -> None:
@@ -47,6 +48,7 @@ def test_every_variable_is_read(clean_env, tmp_path) -> None:
         "DENAVIT_MAX_BATCH": "7",
         "DENAVIT_IK_MAX_TIMEOUT_MS": "250.5",
         "DENAVIT_GRACEFUL_TIMEOUT_S": "3",
+        "DENAVIT_IK_BATCH_PROCESSES": "2",
     }
     for k, v in env.items():
         clean_env.setenv(k, v)
@@ -57,7 +59,7 @@ def test_every_variable_is_read(clean_env, tmp_path) -> None:
     assert s.api_token == "s3cret-token"
     assert s.cors_origins == ["https://a.example", "http://localhost:3000"]
     assert (s.max_body_bytes, s.max_batch, s.ik_max_timeout_ms) == (2048, 7, 250.5)
-    assert s.graceful_timeout_s == 3
+    assert s.graceful_timeout_s == 3 and s.ik_batch_processes == 2
 
 
 def test_cors_origins_as_json_list_and_empty(clean_env) -> None:
@@ -90,6 +92,9 @@ def test_empty_token_means_no_token(clean_env) -> None:
         ("DENAVIT_IK_MAX_TIMEOUT_MS", "0", "greater than 0"),
         ("DENAVIT_IK_MAX_TIMEOUT_MS", "nan", "greater than 0"),
         ("DENAVIT_GRACEFUL_TIMEOUT_S", "-2", "greater than or equal to 0"),
+        ("DENAVIT_IK_BATCH_PROCESSES", "0", "greater than or equal to 1"),
+        ("DENAVIT_IK_BATCH_PROCESSES", "257", "less than or equal to 256"),
+        ("DENAVIT_IK_BATCH_PROCESSES", "two", "integer"),
     ],
 )
 def test_bad_value_names_the_variable(clean_env, variable, value, reason) -> None:

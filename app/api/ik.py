@@ -30,6 +30,7 @@ from app.kinematics import ik
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import group
 from app.kinematics.ik.problem import IKOptions, group_seed
+from app.kinematics.ik_batch import batch_pool, default_processes, result_entry
 from app.kinematics.models import RobotModel
 from app.metrics import record_ik
 
@@ -104,42 +105,35 @@ def _solve_batch(
     options: IKOptions,
     collisions: Collisions | None,
     chain: bool,
-    rng: np.random.Generator | None = None,
+    random_seed: int | None,
+    processes: int,
     cancel: threading.Event | None = None,
 ) -> dict:
     """Solve ``targets`` in order; ``cancel`` (set when the client left) is checked between
-    targets and inside each solve."""
+    targets and inside each solve. Without ``chain`` the targets are independent and spread
+    over ``processes`` worker processes (:mod:`app.kinematics.ik_batch`)."""
     t0 = time.perf_counter()
-    results = []
-    solved = 0
-    current = seed
-    accept = accept_of(robot, collisions)
-    for T in targets:
-        res = ik.solve(robot, T, options, seed=current, accept=accept, rng=rng, cancel=cancel)
-        record_ik(res.success)
-        solved += res.success
-        if chain and res.success:
-            current = res.q
-        results.append(
-            {
-                "success": res.success,
-                "status": res.status,
-                "q": res.q.tolist(),
-                "position_error": res.position_error,
-                "orientation_error": res.orientation_error,
-                "iterations": res.iterations,
-                "restarts": res.restarts,
-                "solve_time_ms": res.solve_time_ms,
-                "reason": res.reason,
-                "detail": res.detail,
-            }
+    if chain:
+        results = []
+        current = seed
+        accept = accept_of(robot, collisions)
+        rng = None if random_seed is None else np.random.default_rng(random_seed)
+        for T in targets:
+            res = ik.solve(robot, T, options, seed=current, accept=accept, rng=rng, cancel=cancel)
+            record_ik(res.success)
+            if res.success:
+                current = res.q
+            results.append(result_entry(res))
+    else:
+        results = batch_pool(processes).solve(
+            robot, targets, seed, options, collisions, random_seed, cancel=cancel, record=record_ik
         )
     return {
         "robot_id": robot.id,
         "frame": options.frame,
         "mode": options.mode,
         "joint_names": robot.joint_names,
-        "solved": solved,
+        "solved": sum(r["success"] for r in results),
         "results": results,
         "total_time_ms": (time.perf_counter() - t0) * 1e3,
         "solver_version": ik.SOLVER_VERSION,
@@ -230,6 +224,7 @@ async def solve_ik_batch(
         options,
         collisions,
         body.chain_seeds,
-        rng_of(body),
+        body.random_seed,
+        request.app.state.settings.ik_batch_processes or default_processes(),
     )
     return ORJSONResponse(out)

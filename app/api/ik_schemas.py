@@ -192,7 +192,10 @@ class IKBatchRequest(IKOptionsIn):
     chain_seeds: bool = Field(
         True,
         description="Seed each target with the previous solution (trajectories); false: every "
-        "target starts from `seed`.",
+        "target starts from `seed`, the targets are solved independently (spread over the "
+        "server's batch worker processes), and with random_seed target i draws its restarts "
+        "from its own generator, child i of SeedSequence(random_seed), so answers do not "
+        "depend on how the batch is split.",
     )
 
 

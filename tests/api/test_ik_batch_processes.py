@@ -1,0 +1,195 @@
+"""IK batches with ``chain_seeds: false`` spread over worker processes (issue 14, item 4).
+
+The reference is the core's single-target solve, called here target by target with the
+documented per-target generator (child ``i`` of ``SeedSequence(random_seed)``): a batch must
+give exactly those answers whatever the number of processes and the chunking. Budgets are
+iteration caps with time limits generous enough never to bind.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import threading
+from pathlib import Path
+
+import numpy as np
+import pinocchio as pin
+import pytest
+from fastapi.testclient import TestClient
+
+from app.kinematics import ik, ik_batch
+from app.kinematics.collision import collision_filter
+from app.kinematics.errors import Cancelled
+from app.kinematics.ik.problem import IKOptions, target_placement
+from app.kinematics.obstacles import parse_obstacles
+from app.main import create_app
+from app.settings import Settings
+from tests.helpers import problem
+
+RANDOM_SEED = 1234
+CAPPED = {"timeout_ms": 200.0, "max_iterations": 300}
+#: Changing fields: everything else of an answer must be equal bit for bit.
+TIMES = ("solve_time_ms",)
+BOX = {"name": "box", "shape": "box", "size": [0.3, 0.3, 0.3], "pose": {"position": [0.45, 0, 0.5]}}
+
+
+def _targets(robot, frame: str, n: int, seed: int) -> list[pin.SE3]:
+    """FK of ``n`` configurations uniform within the limits (a few beyond reach appended)."""
+    rng = np.random.default_rng(seed)
+    lo, hi = np.clip(robot.lower, -np.pi, np.pi), np.clip(robot.upper, -np.pi, np.pi)
+    out = []
+    for _ in range(n - 2):
+        q = rng.uniform(lo, hi)
+        model, data = robot.model, robot.model.createData()
+        pin.forwardKinematics(model, data, robot.to_pin(q))
+        out.append(pin.updateFramePlacement(model, data, robot.frame_id(frame)).copy())
+    far = pin.SE3(np.eye(3), np.array([0.0, 1.0, 0.333]))  # beyond reach, inside the bound
+    return out + [far, far]
+
+
+def _body(robot, frame: str, targets: list[pin.SE3], **extra) -> dict:
+    return {
+        "frame": frame,
+        "targets": [{"matrix": T.homogeneous.tolist()} for T in targets],
+        "seed": robot.mid_range().tolist(),
+        "chain_seeds": False,
+        "random_seed": RANDOM_SEED,
+        **CAPPED,
+        **extra,
+    }
+
+
+def _reference(robot, frame: str, targets: list[pin.SE3], accept=None) -> list[dict]:
+    """Each target solved alone by the core, with its own generator."""
+    options = IKOptions(
+        frame=frame, timeout_ms=CAPPED["timeout_ms"], max_iterations=CAPPED["max_iterations"]
+    )
+    out = []
+    for i, wire in enumerate(targets):
+        # the server's reading of the wire matrix (it re-orthonormalises the rotation)
+        T = target_placement(None, None, wire.homogeneous.tolist(), "pose")
+        rng = np.random.default_rng(np.random.SeedSequence(RANDOM_SEED, spawn_key=(i,)))
+        res = ik.solve(robot, T, options, seed=robot.mid_range(), accept=accept, rng=rng)
+        out.append(
+            {
+                "success": res.success,
+                "q": res.q.tolist(),
+                "position_error": res.position_error,
+                "orientation_error": res.orientation_error,
+                "iterations": res.iterations,
+                "restarts": res.restarts,
+                "status": res.status,
+                "reason": res.reason,
+                "detail": res.detail,
+            }
+        )
+    return out
+
+
+def _same(results: list[dict], reference: list[dict]) -> None:
+    assert len(results) == len(reference)
+    for i, (got, want) in enumerate(zip(results, reference, strict=True)):
+        got = {k: v for k, v in got.items() if k not in TIMES}
+        assert got == want, f"target {i}"
+
+
+@pytest.fixture
+def pooled(tmp_path: Path):
+    """A client whose server solves batches in 2 worker processes; the pool stopped after."""
+    app = create_app(Settings(data_dir=tmp_path / "data", ik_batch_processes=2))
+    with TestClient(app, raise_server_exceptions=False) as c:
+        yield c
+    ik_batch.shutdown_pool()
+
+
+def _pool_pids() -> list[int]:
+    pool = ik_batch._POOL
+    executor = None if pool is None else pool._executor
+    return [] if executor is None else list(executor._processes)
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
+def test_two_processes_answer_as_each_target_alone(pooled, registry, robot_id, frame) -> None:
+    robot = registry.get(robot_id)
+    targets = _targets(robot, frame, 40, seed=3)
+    r = pooled.post(f"/robots/{robot_id}/ik/batch", json=_body(robot, frame, targets))
+    assert r.status_code == 200, r.text
+    assert len(_pool_pids()) == 2  # the batch went through the worker processes
+    out = r.json()
+    _same(out["results"], _reference(robot, frame, targets))
+    assert out["solved"] == sum(x["success"] for x in out["results"]) >= 38
+
+
+def test_chunk_boundaries_do_not_change_answers(pooled, registry, monkeypatch) -> None:
+    """Chunks of 3 over 11 targets (a short last chunk), in order."""
+    monkeypatch.setattr(ik_batch, "CHUNK_MAX", 3)
+    monkeypatch.setattr(ik_batch, "MIN_PARALLEL", 2)
+    robot = registry.get("panda")
+    targets = _targets(robot, "panda_link8", 11, seed=5)
+    r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", targets))
+    assert r.status_code == 200, r.text
+    assert len(_pool_pids()) == 2
+    _same(r.json()["results"], _reference(robot, "panda_link8", targets))
+
+
+def test_collision_aware_batch_in_the_pool(pooled, registry) -> None:
+    robot = registry.get("panda")
+    targets = _targets(robot, "panda_link8", 34, seed=8)
+    body = _body(robot, "panda_link8", targets, avoid_collisions=True, obstacles=[BOX])
+    r = pooled.post("/robots/panda/ik/batch", json=body)
+    assert r.status_code == 200, r.text
+    assert len(_pool_pids()) == 2
+    accept = collision_filter(robot, parse_obstacles([BOX]), margin=0.0, mode="mesh")
+    _same(r.json()["results"], _reference(robot, "panda_link8", targets, accept))
+
+
+def test_cancel_stops_between_chunks(registry) -> None:
+    """The caller's event set after the first chunk's answers: no later chunk is reported,
+    and Cancelled is raised."""
+    robot = registry.get("panda")
+    targets = _targets(robot, "panda_link8", 40, seed=9)
+    cancel = threading.Event()
+    seen: list[bool] = []
+
+    def record(success: bool) -> None:
+        seen.append(success)
+        cancel.set()
+
+    pool = ik_batch.BatchPool(2)
+    options = IKOptions(frame="panda_link8", timeout_ms=200.0, max_iterations=300)
+    try:
+        with pytest.raises(Cancelled):
+            pool.solve(
+                robot, targets, robot.mid_range(), options, None, 1, cancel=cancel, record=record
+            )
+    finally:
+        pool.shutdown()
+    assert len(seen) == ik_batch.chunk_size(40, 2, 200.0) < 40
+
+
+def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
+    """kill -9 of a worker during a batch: 503 problem naming ``targets``; the next batch
+    is answered by new workers."""
+    robot = registry.get("panda")
+    slow = [pin.SE3(np.eye(3), np.array([0.0, 1.0, 0.333]))] * 64  # 64 × 400 ms unreachable
+    body = {**_body(robot, "panda_link8", slow), "mode": "position", "timeout_ms": 400.0}
+    del body["max_iterations"]
+    answer = {}
+    thread = threading.Thread(
+        target=lambda: answer.update(r=pooled.post("/robots/panda/ik/batch", json=body))
+    )
+    thread.start()
+    event = threading.Event()
+    while not _pool_pids() and thread.is_alive():
+        event.wait(0.01)
+    pids = _pool_pids()
+    assert pids, answer
+    os.kill(pids[0], signal.SIGKILL)
+    thread.join(timeout=120)
+    assert not thread.is_alive()
+    problem(answer["r"], 503, "targets")
+    good = _targets(robot, "panda_link8", 34, seed=4)
+    r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", good))
+    assert r.status_code == 200, r.text
+    assert pids[0] not in _pool_pids() and len(_pool_pids()) == 2
