@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install run test lint bench openapi lock image container-check compose-check clean
+.PHONY: install run test lint bench bench-env lock-bench openapi lock image container-check compose-check clean
 
 install: $(STAMP)
 
@@ -61,12 +61,30 @@ lint: install
 test: install lint
 	$(BIN)/python -m pytest -n 2 tests
 
+# The bench-only venv: the Robotics Toolbox (ik_LM, side by side in bench_ik), which needs
+# another NumPy than the service: never in .venv or its locks; `make test`/CI do not need it.
+# Exactly the hash-locked packages of requirements-bench.lock (`make lock-bench`).
+BENCH_VENV  := .venv-bench
+BENCH_LOCK  := requirements-bench.lock
+BENCH_STAMP := $(BENCH_VENV)/.installed
+bench-env: $(BENCH_STAMP)
+$(BENCH_STAMP): $(BENCH_LOCK)
+	test -x $(BENCH_VENV)/bin/python || $(PYTHON) -m venv $(BENCH_VENV)
+	$(BENCH_VENV)/bin/python -m pip install --quiet --no-deps --require-hashes -r $(BENCH_LOCK)
+	touch $(BENCH_STAMP)
+
+lock-bench: install
+	$(BIN)/uv pip compile --quiet --python-version 3.11 --python-platform x86_64-manylinux_2_28 \
+		--generate-hashes --annotation-style line requirements-bench.in -o $(BENCH_LOCK)
+
+# Without the bench venv (no network, say) the ik_LM rows say so; the rest still runs.
 bench: install
-	$(BIN)/python -m bench
+	$(MAKE) bench-env || echo "bench: $(BENCH_VENV) could not be built; ik_LM rows skipped"
+	DENAVIT_BENCH_PYTHON=$(CURDIR)/$(BENCH_VENV)/bin/python $(BIN)/python -m bench
 
 # Regenerate the committed OpenAPI schema from the app (tests/test_openapi.py compares).
 openapi: install
 	$(BIN)/python -m app openapi docs/openapi.json
 
 clean:
-	rm -rf $(VENV) .pytest_cache .ruff_cache
+	rm -rf $(VENV) $(BENCH_VENV) .pytest_cache .ruff_cache

@@ -17,6 +17,8 @@ Environment: ``DENAVIT_BENCH_IK_N`` (targets per robot in process, default 10000
 ``DENAVIT_BENCH_IK_HTTP`` (requests per robot over HTTP, default 300),
 ``DENAVIT_BENCH_IK_ROBOTS`` (comma-separated ``id`` or ``id:frame``; default panda:panda_link8,
 ur5:tool0 and every DH robot of the registry with its ``tool`` frame),
+``DENAVIT_BENCH_IK_LM_N`` (targets per robot of the side-by-side run with the Robotics
+Toolbox's ``ik_LM``, default ``DENAVIT_BENCH_IK_N``; 0 skips it; see :func:`versus_ik_lm`),
 ``DENAVIT_BENCH_IK_AB`` (targets of the compiled-versus-Python loop comparison, default 2000;
 0 skips it).
 """
@@ -39,6 +41,7 @@ from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion
 from app.registry import Registry
 from bench._http import serve
+from bench.rtb_side import IkLM
 
 TOL = 1e-5
 BUDGET_MS = 5.0
@@ -177,6 +180,68 @@ def loops_side_by_side(reg: Registry, n: int) -> list[tuple]:
     return rows
 
 
+#: The solvers of the side-by-side run: (name, closed forms) for ours, (name, setting) for
+#: ik_LM (see bench/rtb_ik_lm.py).
+OURS = (("ours, closed forms on", True), ("ours, closed forms off", False))
+IK_LM = (("ik_LM tol 5e-11 (‖e‖ ≤ 1e-5)", "tuned"), ("ik_LM defaults", "default"))
+
+
+def versus_ik_lm(reg: Registry, n: int, block: int = 500) -> tuple[list[tuple], str | None]:
+    """Ours (closed forms on and off) and the Robotics Toolbox's C++ ``ik_LM`` on the same
+    targets (TRAC-IK's protocol), in alternating blocks of ``block`` targets so that load
+    hits all alike. Every answer is judged by :func:`_verify` (ours and ik_LM's alike) and
+    counts as solved within 5 ms of wall-clock time. Rows: robot, solver, solve rate, mean
+    and p50 wall time, mean CPU time (ms), and the mean CPU time over ik_LM's (tuned);
+    plus why ik_LM did not run, if it did not."""
+    lm = IkLM()
+    rows = []
+    try:
+        for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0")):
+            robot = reg.get(rid)
+            ch = ik_chain(robot, frame)
+            goals = targets(robot, frame, n)
+            T = np.array([g.homogeneous for g in goals])
+            seed = robot.mid_range()
+            joints = lm.load(rid, robot.urdf_text, frame)
+            names = [name for name, _ in OURS] + ([name for name, _ in IK_LM] if joints else [])
+            wall = {k: np.empty(n) for k in names}
+            cpu = {k: np.empty(n) for k in names}
+            ok = dict.fromkeys(names, 0)
+            for _name, analytic in OURS:  # warm-up: chain and closed-form set-up
+                ik.solve(robot, goals[0], IKOptions(frame=frame, analytic=analytic))
+            for a in range(0, n, block):
+                b = min(n, a + block)
+                for name, analytic in OURS:
+                    opts = IKOptions(frame=frame, timeout_ms=BUDGET_MS, analytic=analytic)
+                    for i in range(a, b):
+                        c0 = time.thread_time()
+                        t0 = time.perf_counter()
+                        res = ik.solve(robot, goals[i], opts, seed=seed)
+                        wall[name][i] = time.perf_counter() - t0
+                        cpu[name][i] = time.thread_time() - c0
+                        if res.success and wall[name][i] <= BUDGET_MS * 1e-3:
+                            ok[name] += _verify(robot, frame, res.q, goals[i])
+                for name, setting in IK_LM if joints else ():
+                    out = lm.solve(rid, T[a:b], seed[ch.active], setting)
+                    wall[name][a:b], cpu[name][a:b] = out["wall"], out["cpu"]
+                    for i, q_chain in zip(range(a, b), out["q"], strict=True):
+                        if out["wall"][i - a] <= BUDGET_MS * 1e-3:
+                            q = seed.copy()
+                            q[ch.active] = q_chain
+                            ok[name] += _verify(robot, frame, q, goals[i])
+            ref = cpu[IK_LM[0][0]].mean() if joints else math.nan
+            for name in names:
+                w, c = wall[name] * 1e3, cpu[name] * 1e3
+                ratio = c.mean() / (ref * 1e3)
+                rows.append(
+                    (rid, name, ok[name] / n, w.mean(), float(np.median(w)), c.mean(), ratio)
+                )
+            print(f"  {rid}: side by side done", file=sys.stderr, flush=True)
+    finally:
+        lm.close()
+    return rows, lm.unavailable
+
+
 def calibration() -> float:
     """Best-of-5 time (µs) of a 6×6 ``np.linalg.solve``: a yardstick of the machine's load."""
     A = np.eye(6) * 2.0
@@ -249,6 +314,22 @@ def main() -> None:
         f"\ncalibration after the run: 6×6 np.linalg.solve {calibration():.2f} µs "
         "(best of 5 × 20000; the same machine unloaded: ≈ 4.3 µs)"
     )
+    n_lm = int(os.environ.get("DENAVIT_BENCH_IK_LM_N", str(n)))
+    if n_lm > 0:
+        print(f"\n### Side by side with the Robotics Toolbox's ik_LM: the same {n_lm} targets, "
+              "alternating blocks of 500, every answer checked by our FK\n")  # fmt: skip
+        rows, why = versus_ik_lm(reg, n_lm)
+        print("| robot | solver | solve rate (checked, ≤ 5 ms) | mean (ms) | p50 (ms) "
+              "| mean CPU (ms) | mean CPU ÷ ik_LM tol 5e-11 |")  # fmt: skip
+        print("|---|---|---|---|---|---|---|")
+        for rid, name, rate, mean, p50, cpu, ratio in rows:
+            print(f"| {rid} | {name} | {100 * rate:.2f}% | {mean:.3f} | {p50:.3f} | {cpu:.3f} "
+                  f"| {ratio:.2f} |")  # fmt: skip
+        if why is not None:
+            print(f"\nik_LM rows skipped: {why}")
+        else:
+            print("\nik_LM tol 5e-11: ilimit 30, slimit 100, joint_limits on (its defaults but "
+                  "tol; tol bounds ½eᵀe); ik_LM defaults: tol 1e-6.")  # fmt: skip
     n_ab = int(os.environ.get("DENAVIT_BENCH_IK_AB", "2000"))
     if n_ab > 0:
         print(f"\n### Compiled and Python loop, same {n_ab} targets, alternating (CPU time)\n")
