@@ -264,11 +264,12 @@ class BatchPool:
         executor.shutdown(wait=False, cancel_futures=True)
 
     def shutdown(self) -> None:
-        """Stop the workers (pending chunks are withdrawn)."""
+        """Stop the workers: pending chunks are withdrawn, running ones finish (at most
+        :data:`CHUNK_BUDGET_MS` of budget each) and the workers are joined."""
         with self._lock:
             executor, self._executor = self._executor, None
         if executor is not None:
-            executor.shutdown(wait=False, cancel_futures=True)
+            executor.shutdown(wait=True, cancel_futures=True)
 
     def solve(
         self,

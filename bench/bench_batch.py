@@ -1,0 +1,80 @@
+"""Batch IK across processes: targets per second with 1 and 2 worker processes.
+
+What ``POST /robots/{id}/ik/batch`` with ``chain_seeds: false`` runs
+(:class:`app.kinematics.ik_batch.BatchPool`): the same targets (TRAC-IK's protocol: uniform
+within the limits, seed at mid-range, 5 ms per target) solved in the calling thread
+(1 process) and by a warm pool of 2 worker processes, alternating round by round so that
+load hits both alike. Reported: targets/s (wall clock: the work spans processes) per round,
+the best and the median round, and the speed-up of the medians. Worth reading only with
+the machine otherwise idle: other work on the two cores takes from the pool first.
+
+Environment: ``DENAVIT_BENCH_BATCH_N`` (targets per robot, default 4000),
+``DENAVIT_BENCH_BATCH_ROUNDS`` (rounds of each, default 3).
+"""
+
+from __future__ import annotations
+
+import os
+import time
+
+import numpy as np
+
+from app.kinematics.ik.problem import IKOptions
+from app.kinematics.ik_batch import BatchPool, default_processes
+from app.registry import Registry
+from bench.bench_ik import BUDGET_MS, targets
+
+
+def rates(n: int, rounds: int) -> list[tuple]:
+    """Rows: robot, processes, targets/s of every round, solved."""
+    reg = Registry()
+    pools = {1: BatchPool(1), 2: BatchPool(2)}
+    rows = []
+    try:
+        for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0")):
+            robot = reg.get(rid)
+            goals = targets(robot, frame, n, seed=21)
+            seed = robot.mid_range()
+            options = IKOptions(frame=frame, timeout_ms=BUDGET_MS)
+            for pool in pools.values():  # warm: workers started, robot built, kernels loaded
+                pool.solve(robot, goals[:200], seed, options, None, None)
+            speed: dict[int, list[float]] = {1: [], 2: []}
+            solved = dict.fromkeys(pools, 0)
+            for _ in range(rounds):
+                for p, pool in pools.items():
+                    t0 = time.perf_counter()
+                    out = pool.solve(robot, goals, seed, options, None, None)
+                    speed[p].append(n / (time.perf_counter() - t0))
+                    solved[p] = sum(r["success"] for r in out)
+            for p in pools:
+                rows.append((rid, p, speed[p], solved[p]))
+    finally:
+        for pool in pools.values():
+            pool.shutdown()
+    return rows
+
+
+def main() -> None:
+    n = int(os.environ.get("DENAVIT_BENCH_BATCH_N", "4000"))
+    rounds = int(os.environ.get("DENAVIT_BENCH_BATCH_ROUNDS", "3"))
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(
+        f"machine: {default_processes()} cores usable; load average {load:.1f} at start; "
+        f"{n} targets per robot, 5 ms each, {rounds} alternating rounds"
+    )
+    print("\n| robot | processes | targets/s per round | best | median | solved "
+          "| speed-up (medians) |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|")
+    base: dict[str, float] = {}
+    for rid, p, speed, solved in rates(n, rounds):
+        med = float(np.median(speed))
+        base.setdefault(rid, med)
+        per_round = ", ".join(f"{s:.0f}" for s in speed)
+        print(f"| {rid} | {p} | {per_round} | {max(speed):.0f} | {med:.0f} | {solved}/{n} "
+              f"| {med / base[rid]:.2f}× |")  # fmt: skip
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(f"\nload average at the end: {load:.1f}")
+
+
+if __name__ == "__main__":
+    main()
