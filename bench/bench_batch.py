@@ -20,7 +20,7 @@ import time
 import numpy as np
 
 from app.kinematics.ik.problem import IKOptions
-from app.kinematics.ik_batch import BatchPool, default_processes
+from app.kinematics.ik_batch import BatchPool, BatchTask, default_processes
 from app.registry import Registry
 from bench.bench_ik import BUDGET_MS, targets
 
@@ -34,16 +34,15 @@ def rates(n: int, rounds: int) -> list[tuple]:
         for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0")):
             robot = reg.get(rid)
             goals = targets(robot, frame, n, seed=21)
-            seed = robot.mid_range()
-            options = IKOptions(frame=frame, timeout_ms=BUDGET_MS)
+            task = BatchTask(robot.mid_range(), IKOptions(frame=frame, timeout_ms=BUDGET_MS))
             for pool in pools.values():  # warm: workers started, robot built, kernels loaded
-                pool.solve(robot, goals[:200], seed, options, None, None)
+                pool.solve(robot, goals[:200], task)
             speed: dict[int, list[float]] = {1: [], 2: []}
             solved = dict.fromkeys(pools, 0)
             for _ in range(rounds):
                 for p, pool in pools.items():
                     t0 = time.perf_counter()
-                    out = pool.solve(robot, goals, seed, options, None, None)
+                    out = pool.solve(robot, goals, task)
                     speed[p].append(n / (time.perf_counter() - t0))
                     solved[p] = sum(r["success"] for r in out)
             for p in pools:

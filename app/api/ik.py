@@ -30,7 +30,13 @@ from app.kinematics import ik
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import group
 from app.kinematics.ik.problem import IKOptions, group_seed
-from app.kinematics.ik_batch import batch_pool, default_processes, result_entry
+from app.kinematics.ik_batch import (
+    BatchTask,
+    batch_pool,
+    collision_accept,
+    default_processes,
+    result_entry,
+)
 from app.kinematics.models import RobotModel
 from app.metrics import record_ik
 
@@ -101,23 +107,22 @@ def _solve_one(
 def _solve_batch(
     robot: RobotModel,
     targets: list[pin.SE3],
-    seed: np.ndarray,
-    options: IKOptions,
-    collisions: Collisions | None,
+    task: BatchTask,
     chain: bool,
-    random_seed: int | None,
     processes: int,
     cancel: threading.Event | None = None,
 ) -> dict:
     """Solve ``targets`` in order; ``cancel`` (set when the client left) is checked between
-    targets and inside each solve. Without ``chain`` the targets are independent and spread
-    over ``processes`` worker processes (:mod:`app.kinematics.ik_batch`)."""
+    targets and inside each solve. With ``chain`` each target is seeded by the previous
+    solution (one generator for the batch); without, the targets are independent and
+    spread over ``processes`` worker processes (:mod:`app.kinematics.ik_batch`)."""
     t0 = time.perf_counter()
+    options = task.options
     if chain:
         results = []
-        current = seed
-        accept = accept_of(robot, collisions)
-        rng = None if random_seed is None else np.random.default_rng(random_seed)
+        current = task.seed
+        accept = collision_accept(robot, task.collisions)
+        rng = None if task.random_seed is None else np.random.default_rng(task.random_seed)
         for T in targets:
             res = ik.solve(robot, T, options, seed=current, accept=accept, rng=rng, cancel=cancel)
             record_ik(res.success)
@@ -125,9 +130,7 @@ def _solve_batch(
                 current = res.q
             results.append(result_entry(res))
     else:
-        results = batch_pool(processes).solve(
-            robot, targets, seed, options, collisions, random_seed, cancel=cancel, record=record_ik
-        )
+        results = batch_pool(processes).solve(robot, targets, task, cancel=cancel, record=record_ik)
     return {
         "robot_id": robot.id,
         "frame": options.frame,
@@ -215,16 +218,9 @@ async def solve_ik_batch(
     collisions = collisions_of(request, body)
     targets = [target_of(t, body.mode, field=f"targets.{i}") for i, t in enumerate(body.targets)]
     seed = group_seed(robot, group(robot, body.group), body.seed)
+    task = BatchTask(seed, options, collisions, body.random_seed)
+    processes = request.app.state.settings.ik_batch_processes or default_processes()
     out = await offload_cancellable(
-        request,
-        _solve_batch,
-        robot,
-        targets,
-        seed,
-        options,
-        collisions,
-        body.chain_seeds,
-        body.random_seed,
-        request.app.state.settings.ik_batch_processes or default_processes(),
+        request, _solve_batch, robot, targets, task, body.chain_seeds, processes
     )
     return ORJSONResponse(out)

@@ -70,6 +70,17 @@ POLL_S = 0.05
 Collisions = tuple[tuple[Obstacle, ...], float, str]
 
 
+@dataclass(frozen=True)
+class BatchTask:
+    """What every target of a batch shares: the seed (wire order), the options, the
+    collisions to avoid and the ``random_seed`` of the per-target generators."""
+
+    seed: np.ndarray
+    options: IKOptions
+    collisions: Collisions | None = None
+    random_seed: int | None = None
+
+
 def target_rng(random_seed: int | None, index: int) -> np.random.Generator | None:
     """Target ``index``'s restart generator: the ``index``-th child of
     ``SeedSequence(random_seed)`` (None without a seed: the chain's fixed restart table)."""
@@ -107,28 +118,25 @@ def collision_accept(
 def solve_targets(
     robot: RobotModel,
     targets: Sequence[pin.SE3],
-    seed: np.ndarray,
-    options: IKOptions,
-    collisions: Collisions | None,
-    random_seed: int | None,
+    task: BatchTask,
     *,
     start: int = 0,
     cancel: threading.Event | None = None,
     record: Callable[[bool], None] | None = None,
 ) -> list[dict[str, Any]]:
-    """Solve each target from ``seed`` in this thread; target ``i`` is target ``start + i``
-    of its batch (it picks the generator, :func:`target_rng`). ``record`` is called with each
-    outcome as it comes."""
-    accept = collision_accept(robot, collisions)
+    """Solve each target from ``task.seed`` in this thread; target ``i`` is target
+    ``start + i`` of its batch (it picks the generator, :func:`target_rng`). ``record`` is
+    called with each outcome as it comes."""
+    accept = collision_accept(robot, task.collisions)
     out = []
     for i, T in enumerate(targets):
         res = ik.solve(
             robot,
             T,
-            options,
-            seed=seed,
+            task.options,
+            seed=task.seed,
             accept=accept,
-            rng=target_rng(random_seed, start + i),
+            rng=target_rng(task.random_seed, start + i),
             cancel=cancel,
         )
         if record is not None:
@@ -207,18 +215,12 @@ def _worker_robot(recipe: RobotRecipe) -> RobotModel:
 
 
 def _worker_chunk(
-    recipe: RobotRecipe,
-    matrices: np.ndarray,
-    start: int,
-    seed: np.ndarray,
-    options: IKOptions,
-    collisions: Collisions | None,
-    random_seed: int | None,
+    recipe: RobotRecipe, matrices: np.ndarray, start: int, task: BatchTask
 ) -> list[dict[str, Any]]:
     """Targets ``start`` … of a batch (homogeneous matrices, root frame) in a worker."""
     robot = _worker_robot(recipe)
     targets = [pin.SE3(np.ascontiguousarray(T)) for T in matrices]
-    return solve_targets(robot, targets, seed, options, collisions, random_seed, start=start)
+    return solve_targets(robot, targets, task, start=start)
 
 
 def default_processes() -> int:
@@ -250,7 +252,9 @@ class BatchPool:
         with self._lock:
             if self._executor is None:
                 ctx = multiprocessing.get_context("forkserver")
-                ctx.set_forkserver_preload(["app.kinematics.ik_batch"])
+                ctx.set_forkserver_preload(
+                    ["app.kinematics.forkserver_init", "app.kinematics.ik_batch"]
+                )
                 self._executor = ProcessPoolExecutor(
                     self.processes, mp_context=ctx, initializer=_worker_init
                 )
@@ -275,15 +279,12 @@ class BatchPool:
         self,
         robot: RobotModel,
         targets: Sequence[pin.SE3],
-        seed: np.ndarray,
-        options: IKOptions,
-        collisions: Collisions | None,
-        random_seed: int | None,
+        task: BatchTask,
         *,
         cancel: threading.Event | None = None,
         record: Callable[[bool], None] | None = None,
     ) -> list[dict[str, Any]]:
-        """Every target solved from ``seed``, in order (as :func:`solve_targets`): in the
+        """Every target solved from ``task.seed``, in order (as :func:`solve_targets`): in the
         workers when there are several and at least :data:`MIN_PARALLEL` targets, else here.
 
         Raises
@@ -295,27 +296,16 @@ class BatchPool:
         """
         n = len(targets)
         if self.processes == 1 or n < MIN_PARALLEL:
-            return solve_targets(
-                robot, targets, seed, options, collisions, random_seed, cancel=cancel, record=record
-            )
+            return solve_targets(robot, targets, task, cancel=cancel, record=record)
         recipe = RobotRecipe.of(robot)
-        size = chunk_size(n, self.processes, options.timeout_ms)
+        size = chunk_size(n, self.processes, task.options.timeout_ms)
         matrices = np.array([T.homogeneous for T in targets])
         executor = self._pool()
         futures: list[Future] = []
         try:
             for a in range(0, n, size):
                 futures.append(
-                    executor.submit(
-                        _worker_chunk,
-                        recipe,
-                        matrices[a : a + size],
-                        a,
-                        seed,
-                        options,
-                        collisions,
-                        random_seed,
-                    )
+                    executor.submit(_worker_chunk, recipe, matrices[a : a + size], a, task)
                 )
             out: list[dict[str, Any]] = []
             for fut in futures:

@@ -160,9 +160,8 @@ def test_cancel_stops_between_chunks(registry) -> None:
     options = IKOptions(frame="panda_link8", timeout_ms=200.0, max_iterations=300)
     try:
         with pytest.raises(Cancelled):
-            pool.solve(
-                robot, targets, robot.mid_range(), options, None, 1, cancel=cancel, record=record
-            )
+            task = ik_batch.BatchTask(robot.mid_range(), options, random_seed=1)
+            pool.solve(robot, targets, task, cancel=cancel, record=record)
     finally:
         pool.shutdown()
     assert len(seen) == ik_batch.chunk_size(40, 2, 200.0) < 40
