@@ -14,6 +14,7 @@ Threads that talk to a live server each open their own ``httpx.Client``.
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import re
 import socket
@@ -23,6 +24,7 @@ import tempfile
 import time
 from collections.abc import Iterator
 from pathlib import Path
+from urllib.parse import urlsplit
 
 import httpx
 import orjson
@@ -201,3 +203,16 @@ def write_routes(app: FastAPI) -> list[tuple[str, str, APIRoute]]:
         if _uses(r.dependant, require_token)
         for m in sorted(r.methods)
     ]
+
+
+def send_and_hang_up(url: str, path: str, body: dict) -> None:
+    """Send a whole request on a raw connection, then close it without reading the answer."""
+    parts = urlsplit(url)
+    payload = json.dumps(body).encode()
+    head = (
+        f"POST {path} HTTP/1.1\r\nHost: {parts.hostname}\r\n"
+        f"Content-Type: application/json\r\nContent-Length: {len(payload)}\r\n\r\n"
+    ).encode()
+    with socket.create_connection((parts.hostname, parts.port), timeout=10) as s:
+        s.sendall(head + payload)
+        time.sleep(0.2)  # let the server read it and hand it to the pool

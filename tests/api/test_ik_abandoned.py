@@ -7,13 +7,10 @@ gone (20 targets × 1 s: 20 s of a pool worker for nobody), starving every other
 
 from __future__ import annotations
 
-import json
 import os
-import socket
 import threading
 import time
 from pathlib import Path
-from urllib.parse import urlsplit
 
 import httpx
 import numpy as np
@@ -27,7 +24,7 @@ from app.kinematics.ik.problem import IKOptions
 from app.main import create_app
 from app.registry import Registry
 from app.settings import Settings
-from tests.helpers import serve
+from tests.helpers import send_and_hang_up, serve
 
 #: 20 unreachable targets, 1 s each: 20 s of solver time. 1.0 m from the shoulder: beyond
 #: the panda's reach (~0.95 m) but inside its reach bound (1.09 m, app.kinematics.ik.failure),
@@ -52,19 +49,6 @@ def reachable_batch(registry: Registry) -> dict:
         T = pin.updateFramePlacement(model, data, robot.frame_id(robot.ee_frame))
         out.append({"position": T.translation.tolist()})
     return {"targets": out, "mode": "position", "timeout_ms": TIMEOUT_MS}
-
-
-def send_and_hang_up(url: str, path: str, body: dict) -> None:
-    """Send a whole request on a raw connection, then close it without reading the answer."""
-    parts = urlsplit(url)
-    payload = json.dumps(body).encode()
-    head = (
-        f"POST {path} HTTP/1.1\r\nHost: {parts.hostname}\r\n"
-        f"Content-Type: application/json\r\nContent-Length: {len(payload)}\r\n\r\n"
-    ).encode()
-    with socket.create_connection((parts.hostname, parts.port), timeout=10) as s:
-        s.sendall(head + payload)
-        time.sleep(0.2)  # let the server read it and hand it to the pool
 
 
 def test_abandoned_batches_do_not_starve_the_pool(tmp_path: Path, registry: Registry) -> None:

@@ -9,10 +9,12 @@ iteration caps with time limits generous enough never to bind.
 from __future__ import annotations
 
 import os
+import re
 import signal
 import threading
 from pathlib import Path
 
+import httpx
 import numpy as np
 import pinocchio as pin
 import pytest
@@ -25,7 +27,7 @@ from app.kinematics.ik.problem import IKOptions, target_placement
 from app.kinematics.obstacles import parse_obstacles
 from app.main import create_app
 from app.settings import Settings
-from tests.helpers import problem
+from tests.helpers import problem, send_and_hang_up, serve
 
 RANDOM_SEED = 1234
 CAPPED = {"timeout_ms": 200.0, "max_iterations": 300}
@@ -192,3 +194,39 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
     r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", good))
     assert r.status_code == 200, r.text
     assert pids[0] not in _pool_pids() and len(_pool_pids()) == 2
+
+
+def _ik_failures(client: httpx.Client) -> float:
+    text = client.get("/metrics").text
+    return float(re.search(r'denavit_ik_requests_total\{result="failure"\} (\S+)', text)[1])
+
+
+def _descendants(pid: int) -> list[int]:
+    """Every process below ``pid`` (Linux /proc)."""
+    out = []
+    for task in Path(f"/proc/{pid}/task").iterdir():
+        for child in (task / "children").read_text().split():
+            out += [int(child), *_descendants(int(child))]
+    return out
+
+
+def test_a_hung_up_batch_frees_the_pool(tmp_path: Path, registry) -> None:
+    """A live server (1 worker, a pool of 2): a batch of 64 unreachable targets × 400 ms
+    (12.8 s of the pool's time), its client gone at once; the next batch (in the pool too)
+    is answered while fewer than half of the abandoned targets were ever solved (its chunks
+    were withdrawn, not queued ahead of the next batch's)."""
+    robot = registry.get("panda")
+    slow = [pin.SE3(np.eye(3), np.array([0.0, 1.0, 0.333]))] * 64
+    abandoned = {**_body(robot, "panda_link8", slow), "mode": "position", "timeout_ms": 400.0}
+    del abandoned["max_iterations"]
+    good = _body(robot, "panda_link8", _targets(robot, "panda_link8", 34, seed=6)[:32])
+    with serve(tmp_path / "data", settings={"ik_batch_processes": "2"}) as server:
+        with httpx.Client(base_url=server.url, timeout=120) as c:
+            assert c.post("/robots/panda/ik/batch", json=good).status_code == 200  # pool warm
+            before = _ik_failures(c)
+            send_and_hang_up(server.url, "/robots/panda/ik/batch", abandoned)
+            r = c.post("/robots/panda/ik/batch", json=good)
+            assert r.status_code == 200 and r.json()["solved"] == 32, r.text
+            assert _ik_failures(c) - before < 32
+            # the batches ran in the pool: the forkserver and its 2 workers below the server
+            assert len(_descendants(server.proc.pid)) >= 3
