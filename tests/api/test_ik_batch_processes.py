@@ -24,6 +24,7 @@ from app.kinematics import ik, ik_batch
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik.problem import IKOptions, target_placement
+from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import parse_obstacles
 from app.main import create_app
 from app.settings import Settings
@@ -230,3 +231,16 @@ def test_a_hung_up_batch_frees_the_pool(tmp_path: Path, registry) -> None:
             assert _ik_failures(c) - before < 32
             # the batches ran in the pool: the forkserver and its 2 workers below the server
             assert len(_descendants(server.proc.pid)) >= 3
+
+
+def test_a_replaced_robot_is_rebuilt_in_the_workers(registry) -> None:
+    """The workers' cache key is the robot id and a digest of what it is built from: a robot
+    replaced under the same id gets a new key, so workers never solve with the old one."""
+    panda, ur5 = registry.get("panda"), registry.get("ur5")
+    old = RobotModel("arm", panda.urdf_text, package_dirs=panda.package_dirs)
+    new = RobotModel("arm", ur5.urdf_text, package_dirs=ur5.package_dirs)
+    a, b = ik_batch.RobotRecipe.of(old), ik_batch.RobotRecipe.of(new)
+    assert a.robot_id == b.robot_id == "arm" and a.key != b.key
+    assert ik_batch.RobotRecipe.of(RobotModel("arm", panda.urdf_text)).key != a.key  # dirs
+    rebuilt = b.build()
+    assert rebuilt.joint_names == ur5.joint_names and rebuilt.urdf_text == ur5.urdf_text
