@@ -14,6 +14,7 @@ from app.api import (
     reachability,
     robots,
     scenes,
+    stream,
     velocity,
 )
 
@@ -34,4 +35,5 @@ ROUTERS = [
     scenes.router,
     paths.router,
     velocity.router,
+    stream.router,  # a WebSocket: not in the OpenAPI document
 ]
