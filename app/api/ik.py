@@ -54,6 +54,7 @@ def _solve_one(
     collisions: Collisions | None,
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
+    annotate: bool = True,
 ) -> dict:
     res = ik.solve(
         robot,
@@ -64,7 +65,7 @@ def _solve_one(
         rng=rng,
         cancel=cancel,
         clearance=clearance_of(robot, collisions),
-        annotate=True,
+        annotate=annotate,
     )
     record_ik(res.success)
     return {
@@ -178,14 +179,20 @@ async def solve_ik(
 
 
 def prepare_ik(
-    conn: HTTPConnection, robot: RobotModel, body: IKRequest, last_q: np.ndarray | None = None
+    conn: HTTPConnection,
+    robot: RobotModel,
+    body: IKRequest,
+    last_q: np.ndarray | None = None,
+    annotate: bool = True,
 ) -> tuple[Callable[..., dict], bool]:
     """One IK query (HTTP or the stream) as a call giving its answer body, and whether it may
     run on the event loop (a budget up to :data:`INLINE_BUDGET_MS`, no collision checks).
 
     The call takes an optional ``cancel`` event (:func:`offload_cancellable`). ``last_q``
     seeds the query when the body gives no ``seed`` (the stream's last solution); without
-    either, the solver's default (the middle of the joint limits).
+    either, the solver's default (the middle of the joint limits). Without ``annotate``
+    (the stream's binary answers, which carry no labels) the solutions' ``branch`` and
+    ``manipulability`` are computed only where the ranking needs them: the same ``q``.
     """
     options = options_of(robot, body, body.num_solutions, body.rank_by)
     collisions = collisions_of(conn, body)
@@ -193,7 +200,7 @@ def prepare_ik(
     seed = last_q if body.seed is None else group_seed(robot, group(robot, body.group), body.seed)
     inline = body.timeout_ms <= INLINE_BUDGET_MS and collisions is None
     return functools.partial(
-        _solve_one, robot, target, seed, options, collisions, rng_of(body)
+        _solve_one, robot, target, seed, options, collisions, rng_of(body), annotate=annotate
     ), inline
 
 

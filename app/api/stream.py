@@ -239,7 +239,13 @@ class _Session:
         if message.op == "jacobian":
             return jacobian_answer(robot, body)  # type: ignore[arg-type]
         check_budget(self.ws, body.timeout_ms)  # type: ignore[attr-defined]
-        solve, inline = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
+        solve, inline = prepare_ik(
+            self.ws,
+            robot,
+            body,  # type: ignore[arg-type]
+            self.last_q,
+            annotate=not message.binary,  # binary answers carry no branch labels
+        )
         out = solve() if inline else await offload(solve, cancel=self.cancel)
         if out["success"]:
             self.last_q = np.array(out["q"])
