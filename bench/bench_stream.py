@@ -10,7 +10,9 @@ transports alternating target by target so load hits them alike:
   previous answer (``seed``), sequential;
 - **stream, JSON**: one socket (``websockets`` sync client, no compression), one ``ik``
   message at a time, seeded by the stream itself (the last solution);
-- **stream, binary**: the same socket, binary IK frames (the options of the JSON message).
+- **stream, binary**: the same socket, binary IK frames (the options of the JSON message);
+- **stream, binary, 8 in flight**: the same frames pipelined (the time between answers;
+  "median" and "p99" are then of that interval, not of a round trip).
 
 Per transport: round trips per second (1 / mean round trip), median and p99 round trip.
 Targets: the stream ≥ 5× HTTP's round trips per second, p99 < 1 ms for the UR5 step.
@@ -36,7 +38,11 @@ ROBOTS = {
     "ur5": [0.3, -1.1, 1.4, -0.6, 1.2, 0.4],
     "panda": [0.2, -0.5, 0.1, -2.0, 0.3, 1.6, 0.6, 0.02],
 }
-TRANSPORTS = ("HTTP", "stream, JSON", "stream, binary")
+#: Binary frames with several in flight (the seeding is the server's, so a client may send
+#: the next targets before the answers come back; HTTP has no such mode).
+WINDOW = 8
+PIPELINED = f"stream, binary, {WINDOW} in flight"
+TRANSPORTS = ("HTTP", "stream, JSON", "stream, binary", PIPELINED)
 
 
 def _targets(pose: dict) -> list[tuple[list[float], list[float]]]:
@@ -85,7 +91,26 @@ def _run(url: str, robot_id: str, q: list[float]) -> dict[str, list[float]]:
             reply = ws.recv()
             times["stream, binary"].append(time.perf_counter() - t)
             assert isinstance(reply, bytes), reply
+        times[PIPELINED] = _pipelined(ws, targets)
     return times
+
+
+def _pipelined(ws, targets: list[tuple[list[float], list[float]]]) -> list[float]:
+    """Binary IK frames with up to :data:`WINDOW` unanswered (the server still solves them in
+    order, each seeded by the previous solution): the time per answer, arrival to arrival."""
+    frames = [np.array([3.0, i, *p, *o], "<f8").tobytes() for i, (p, o) in enumerate(targets)]
+    out = []
+    for frame in frames[:WINDOW]:
+        ws.send(frame)
+    last = time.perf_counter()
+    for i in range(len(frames)):
+        ws.recv()
+        if i + WINDOW < len(frames):
+            ws.send(frames[i + WINDOW])
+        now = time.perf_counter()
+        out.append(now - last)
+        last = now
+    return out
 
 
 def pose_target(pose: dict) -> dict:
