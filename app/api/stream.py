@@ -33,6 +33,7 @@ from app.api.ik_request import check_budget
 from app.api.jacobian import jacobian_answer
 from app.api.offload import offload
 from app.api.responses import dumps
+from app.api.schemas import Schema
 from app.api.stream_schemas import (
     Message,
     StreamMessageError,
@@ -101,7 +102,8 @@ class _Session:
         self.path = f"/robots/{robot_id}/stream"
         self.robot: RobotModel | None = None
         self.last_q: np.ndarray | None = None
-        self.ik_options: dict[str, Any] = {}
+        self.ik_body: Schema | None = None  # the last JSON ik message
+        self.ik_options: dict[str, Any] | None = None  # its options, once a binary frame came
         self.cancel = threading.Event()  # set when the socket ends: stops pooled IK
 
     # -------------------------------------------------------------------- set-up
@@ -207,9 +209,8 @@ class _Session:
             if frame.get("text") is not None:
                 message = parse_text(frame["text"], self.robot_id, self.path)
             else:
-                message = parse_binary(
-                    frame.get("bytes") or b"", self.robot_id, self.path, self.ik_options
-                )
+                raw = frame.get("bytes") or b""
+                message = parse_binary(raw, self.robot_id, self.path, self._binary_ik_options)
             if message.token is not None:
                 return self._auth_answer(message)
             out = await self._compute(message)
@@ -249,9 +250,18 @@ class _Session:
         out = solve() if inline else await offload(solve, cancel=self.cancel)
         if out["success"]:
             self.last_q = np.array(out["q"])
-        if not message.binary:  # binary ik frames reuse these options
-            self.ik_options = body.model_dump(exclude={"target", "seed"}, exclude_unset=True)
+        if not message.binary:  # binary ik frames reuse these options (dumped when needed)
+            self.ik_body, self.ik_options = body, None
         return out
+
+    def _binary_ik_options(self) -> dict[str, Any]:
+        """The options of binary IK frames: the last JSON ik message's, target and seed left
+        out (HTTP defaults before one)."""
+        if self.ik_options is None:
+            body = self.ik_body
+            dump = {} if body is None else body.model_dump(exclude_unset=True)
+            self.ik_options = {k: v for k, v in dump.items() if k not in ("target", "seed")}
+        return self.ik_options
 
 
 def _size(message: dict[str, Any]) -> int:

@@ -13,6 +13,7 @@ Binary frames are little-endian float64 arrays: ``[op code, id, payload...]``
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -119,13 +120,13 @@ def _malformed(detail: str, instance: str) -> dict[str, Any]:
 
 
 def parse_binary(
-    data: bytes, robot_id: str, stream_path: str, ik_options: dict[str, Any]
+    data: bytes, robot_id: str, stream_path: str, ik_options: Callable[[], dict[str, Any]]
 ) -> Message:
     """A binary frame → :class:`Message` (or :class:`StreamMessageError`).
 
     Layout, little-endian float64: ``[op code, id, payload]``; payload ``q`` (one value per
     joint) for fk and jacobian, the target ``[x, y, z, qx, qy, qz, qw]`` for ik (its other
-    options: ``ik_options``, those of the socket's last valid JSON ik message)."""
+    options: ``ik_options()``, those of the socket's last valid JSON ik message)."""
     if len(data) % 8 or len(data) < 16:
         raise _invalid(
             "message",
@@ -149,7 +150,7 @@ def parse_binary(
                 op,
             )
         target = {"position": payload[:3], "orientation": payload[3:]}
-        body = {**ik_options, "target": target}
+        body = {**ik_options(), "target": target}
     else:
         body = {"q": payload}
     return Message(msg_id, op, validate(op, body, robot_id, msg_id), binary=True)

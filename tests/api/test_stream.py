@@ -247,6 +247,8 @@ def test_the_token_is_required_when_set(stream_app) -> None:
         ) as ws:
             send(ws, fk)
             assert ws.receive_json()["poses"]
+            send(ws, {"token": "s3cret"})  # later token messages are answered too
+            assert ws.receive_json() == {"id": None, "op": "auth", "authenticated": True}
         with client.websocket_connect("/robots/ur5/stream") as ws:
             send(ws, {"id": "a", "token": "s3cret"})
             assert ws.receive_json() == {"id": "a", "op": "auth", "authenticated": True}
@@ -293,3 +295,25 @@ def test_a_client_that_stops_reading_is_no_longer_read(stream_app) -> None:
     asyncio.run(main())
     assert sent[:2] == ["websocket.accept", "websocket.send"]
     assert received.count("message") == 4
+
+
+def test_a_bug_in_one_message_is_a_500_error_message_and_the_socket_stays_usable(
+    client, monkeypatch
+) -> None:
+    """An unexpected exception while answering: logged, answered as the HTTP guard's 500."""
+    from app.api import stream
+
+    real = stream.jacobian_answer
+
+    def buggy(robot, body):
+        raise RuntimeError("a bug, on purpose")
+
+    monkeypatch.setattr(stream, "jacobian_answer", buggy)
+    with client.websocket_connect("/robots/ur5/stream") as ws:
+        send(ws, {"id": 1, "op": "jacobian", "q": Q_UR5})
+        err = ws.receive_json()
+        assert (err["id"], err["op"], err["error"]["status"]) == (1, "jacobian", 500)
+        assert err["error"]["detail"] == "internal error"
+        monkeypatch.setattr(stream, "jacobian_answer", real)
+        send(ws, {"id": 2, "op": "jacobian", "q": Q_UR5})
+        assert ws.receive_json()["jacobian"]
