@@ -23,10 +23,11 @@ from typing import Any
 
 import numpy as np
 from fastapi import APIRouter, WebSocket
+from starlette.responses import Response
 from starlette.websockets import WebSocketDisconnect, WebSocketState
 
 from app.api.deps import load_robot
-from app.api.errors import json_bytes, kinematics_problem, problem_body
+from app.api.errors import json_bytes, kinematics_problem, problem, problem_body
 from app.api.fk import fk_answer
 from app.api.ik import prepare_ik
 from app.api.ik_request import check_budget
@@ -73,6 +74,19 @@ class _Close(Exception):
 def _reason(text: str) -> str:
     """A close reason within the protocol's 123 bytes."""
     return text.encode()[:123].decode(errors="ignore")
+
+
+@router.get("/robots/{robot_id}/stream", include_in_schema=False)
+async def stream_over_http(robot_id: str) -> Response:
+    """A plain HTTP request to the stream: 426, naming the WebSocket upgrade it needs."""
+    return problem(
+        426,
+        "this is a WebSocket endpoint: connect with ws:// (an HTTP/1.1 Upgrade request); "
+        "see docs/stream.md",
+        kind="upgrade-required",
+        instance=f"/robots/{robot_id}/stream",
+        headers={"Upgrade": "websocket", "Connection": "Upgrade"},
+    )
 
 
 @router.websocket("/robots/{robot_id}/stream")

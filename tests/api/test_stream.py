@@ -317,3 +317,11 @@ def test_a_bug_in_one_message_is_a_500_error_message_and_the_socket_stays_usable
         monkeypatch.setattr(stream, "jacobian_answer", real)
         send(ws, {"id": 2, "op": "jacobian", "q": Q_UR5})
         assert ws.receive_json()["jacobian"]
+
+
+def test_plain_http_to_the_stream_is_told_to_upgrade(client) -> None:
+    resp = client.get("/robots/ur5/stream")
+    assert resp.status_code == 426
+    assert resp.headers["content-type"] == "application/problem+json"
+    assert resp.headers["upgrade"] == "websocket"
+    assert "WebSocket" in resp.json()["detail"]
