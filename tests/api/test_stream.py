@@ -325,3 +325,24 @@ def test_plain_http_to_the_stream_is_told_to_upgrade(client) -> None:
     assert resp.headers["content-type"] == "application/problem+json"
     assert resp.headers["upgrade"] == "websocket"
     assert "WebSocket" in resp.json()["detail"]
+
+
+def test_collision_aware_ik_runs_as_over_http(client, registry) -> None:
+    """Obstacles (in the work pool), then a binary frame reusing those options."""
+    target = target_of(registry, "ur5", Q_UR5, "tool0")
+    ball = {"name": "ball", "shape": "sphere", "radius": 0.05, "pose": {"position": [2, 2, 2]}}
+    body = {"target": target, "avoid_collisions": True, "obstacles": [ball], "seed": Q_UR5,
+            **EXACT_IK}  # fmt: skip
+    expected = client.post("/robots/ur5/ik", json=body).json()
+    with client.websocket_connect("/robots/ur5/stream") as ws:
+        send(ws, {"id": 1, "op": "ik", **body})
+        ans = ws.receive_json()
+        assert ans["success"]
+        ans.pop("solve_time_ms"), expected.pop("solve_time_ms")
+        assert answer_body(ans) == expected
+        ws.send_bytes(
+            np.array([3.0, 2.0, *target["position"], *target["orientation"]], "<f8").tobytes()
+        )
+        got = np.frombuffer(ws.receive_bytes(), "<f8")
+        assert got[:3].tolist() == [3.0, 2.0, 1.0]
+        assert got[3:-2].tolist() == ans["q"]
