@@ -117,6 +117,20 @@ class Settings(BaseSettings):
         "false (each uvicorn worker has its own pool: workers × this many processes); 1 "
         "solves them in the request's thread; default every core the process may use.",
     )
+    stream_max_in_flight: int = Field(
+        32,
+        ge=1,
+        le=4096,
+        description="WS /robots/{id}/stream: most messages read but not yet answered on one "
+        "socket; the server stops reading a socket that many answers behind (backpressure).",
+    )
+    stream_max_message_bytes: int = Field(
+        1024 * 1024,
+        ge=1024,
+        le=64 * 1024 * 1024,
+        description="WS /robots/{id}/stream: largest message (bytes); a longer one closes the "
+        "socket with code 1009.",
+    )
     graceful_timeout_s: int = Field(
         8,
         ge=0,

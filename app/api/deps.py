@@ -11,6 +11,7 @@ from typing import Annotated
 
 from fastapi import Depends, Request
 from starlette.concurrency import run_in_threadpool
+from starlette.requests import HTTPConnection
 
 from app.kinematics.models import RobotModel
 from app.registry import Registry
@@ -28,7 +29,7 @@ async def app_settings(request: Request) -> Settings:
     return request.app.state.settings
 
 
-def scene_store(request: Request) -> SceneStore:
+def scene_store(request: HTTPConnection) -> SceneStore:
     """The app's scene store (``<data_dir>/scenes``), created on first use."""
     store = getattr(request.app.state, "scenes", None)
     if store is None:

@@ -9,6 +9,7 @@ validation failures add every ``errors`` entry.
 from __future__ import annotations
 
 import logging
+from collections.abc import Sequence
 from typing import Any
 
 import orjson
@@ -41,6 +42,7 @@ _TITLES = {
     413: "Content Too Large",
     415: "Unsupported Media Type",
     422: "Unprocessable Content",
+    426: "Upgrade Required",
     500: "Internal Server Error",
     503: "Service Unavailable",
 }
@@ -98,6 +100,25 @@ def problem(
     **extra: Any,
 ) -> Response:
     """A problem-details response."""
+    body = problem_body(status, detail, kind=kind, field=field, instance=instance, **extra)
+    return Response(
+        json_bytes(body),
+        status_code=status,
+        media_type="application/problem+json",
+        headers=headers,
+    )
+
+
+def problem_body(
+    status: int,
+    detail: str,
+    *,
+    kind: str | None = None,
+    field: str | None = None,
+    instance: str | None = None,
+    **extra: Any,
+) -> dict[str, Any]:
+    """The problem-details body of :func:`problem` (also sent in stream error messages)."""
     body: dict[str, Any] = {
         "type": PROBLEM_TYPES + (kind or str(status)),
         "title": _TITLES.get(status, "Error"),
@@ -109,16 +130,16 @@ def problem(
     if field is not None:
         body["field"] = field
     body.update({k: v for k, v in extra.items() if v is not None})
+    return body
+
+
+def json_bytes(obj: Any) -> bytes:
+    """``obj`` (plain JSON types) as JSON; a lone surrogate in echoed client text becomes
+    U+FFFD."""
     try:
-        content = orjson.dumps(body)
-    except orjson.JSONEncodeError:  # echoed client text with a lone surrogate
-        content = orjson.dumps(_printable(body))
-    return Response(
-        content,
-        status_code=status,
-        media_type="application/problem+json",
-        headers=headers,
-    )
+        return orjson.dumps(obj)
+    except orjson.JSONEncodeError:
+        return orjson.dumps(_printable(obj))
 
 
 def _printable(obj: Any) -> Any:
@@ -152,23 +173,60 @@ _STATUS = {
 }
 
 
+def kinematics_problem(exc: KinematicsError, instance: str) -> dict[str, Any]:
+    """The problem body of a core error (its status from the error's type)."""
+    status, kind = _STATUS.get(type(exc), (422, "invalid-input"))
+    if isinstance(exc, UnknownNameError) and exc.field not in PATH_FIELDS:
+        status = 422  # a name in the body (frame, joint, group, scene): invalid input
+    detail = f"{exc.field}: {exc.message}" if exc.field else exc.message
+    return problem_body(
+        status,
+        detail,
+        kind=kind,
+        field=exc.field,
+        instance=instance,
+        suggestions=getattr(exc, "suggestions", None),
+    )
+
+
+def validation_problem(errs: Sequence[Any], instance: str) -> dict[str, Any]:
+    """The problem body of failed request validation (pydantic's ``errors()``): 400 for
+    malformed JSON, else 422 naming the first field and listing every failure."""
+    if any(e.get("type") == "json_invalid" for e in errs):
+        e = next(e for e in errs if e.get("type") == "json_invalid")
+        ctx = e.get("ctx") or {}
+        return problem_body(
+            400,
+            f"body: malformed JSON ({ctx.get('error', e.get('msg'))})",
+            kind="malformed-json",
+            field="body",
+            instance=instance,
+        )
+    items = [{"field": _loc(e["loc"]), "message": e["msg"]} for e in errs]
+    first = items[0] if items else {"field": "body", "message": "invalid request"}
+    more = f" (and {len(items) - 1} more)" if len(items) > 1 else ""
+    return problem_body(
+        422,
+        f"{first['field']}: {first['message']}{more}",
+        kind="validation-error",
+        field=first["field"],
+        instance=instance,
+        errors=items[:50],
+    )
+
+
+def _response(body: dict[str, Any]) -> Response:
+    return Response(
+        json_bytes(body), status_code=body["status"], media_type="application/problem+json"
+    )
+
+
 def install(app: FastAPI) -> None:
     """Register the handlers that turn every error into a problem response."""
 
     @app.exception_handler(KinematicsError)
     async def _kinematics(request: Request, exc: KinematicsError) -> Response:
-        status, kind = _STATUS.get(type(exc), (422, "invalid-input"))
-        if isinstance(exc, UnknownNameError) and exc.field not in PATH_FIELDS:
-            status = 422  # a name in the body (frame, joint, group, scene): invalid input
-        detail = f"{exc.field}: {exc.message}" if exc.field else exc.message
-        return problem(
-            status,
-            detail,
-            kind=kind,
-            field=exc.field,
-            instance=request.url.path,
-            suggestions=getattr(exc, "suggestions", None),
-        )
+        return _response(kinematics_problem(exc, request.url.path))
 
     @app.exception_handler(MalformedBodyError)
     async def _malformed(request: Request, exc: MalformedBodyError) -> Response:
@@ -178,28 +236,7 @@ def install(app: FastAPI) -> None:
 
     @app.exception_handler(RequestValidationError)
     async def _validation(request: Request, exc: RequestValidationError) -> Response:
-        errs = exc.errors()
-        if any(e.get("type") == "json_invalid" for e in errs):
-            e = next(e for e in errs if e.get("type") == "json_invalid")
-            ctx = e.get("ctx") or {}
-            return problem(
-                400,
-                f"body: malformed JSON ({ctx.get('error', e.get('msg'))})",
-                kind="malformed-json",
-                field="body",
-                instance=request.url.path,
-            )
-        items = [{"field": _loc(e["loc"]), "message": e["msg"]} for e in errs]
-        first = items[0] if items else {"field": "body", "message": "invalid request"}
-        more = f" (and {len(items) - 1} more)" if len(items) > 1 else ""
-        return problem(
-            422,
-            f"{first['field']}: {first['message']}{more}",
-            kind="validation-error",
-            field=first["field"],
-            instance=request.url.path,
-            errors=items[:50],
-        )
+        return _response(validation_problem(exc.errors(), request.url.path))
 
     @app.exception_handler(StarletteHTTPException)
     async def _http(request: Request, exc: StarletteHTTPException) -> Response:

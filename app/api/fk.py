@@ -82,20 +82,22 @@ async def compute_fk(robot_id: RobotId, body: FKRequest, reg: RegistryDep) -> OR
 
     Out-of-limit configurations are computed, and flagged with ``within_limits: false``.
     """
-    robot = await load_robot(reg, robot_id)
+    return ORJSONResponse(fk_answer(await load_robot(reg, robot_id), body))
+
+
+def fk_answer(robot: RobotModel, body: FKRequest) -> dict:
+    """The body of an FK answer (HTTP and the stream): poses in the root frame."""
     grp, q = body.group_config(robot)
     frames = body.frames if body.frames else [default_frame(robot, grp, None)]
     poses = forward_kinematics(robot, q, frames)
     outside = robot.limit_violations(q)
-    return ORJSONResponse(
-        {
-            "robot_id": robot.id,
-            "q": q.tolist(),
-            "poses": {name: pose_json(T) for name, T in poses.items()},
-            "within_limits": not outside,
-            "joints_outside_limits": outside,
-        }
-    )
+    return {
+        "robot_id": robot.id,
+        "q": q.tolist(),
+        "poses": {name: pose_json(T) for name, T in poses.items()},
+        "within_limits": not outside,
+        "joints_outside_limits": outside,
+    }
 
 
 @router.post(

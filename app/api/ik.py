@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import functools
 import threading
 import time
+from collections.abc import Callable
 
 import numpy as np
 import pinocchio as pin
 from fastapi import APIRouter, Request
+from starlette.requests import HTTPConnection
 
 from app.api.deps import RegistryDep, load_robot
 from app.api.errors import ERROR_RESPONSES
@@ -53,11 +56,12 @@ def _named(robot: RobotModel, q: np.ndarray) -> dict[str, float]:
 def _solve_one(
     robot: RobotModel,
     target: pin.SE3,
-    seed: np.ndarray,
+    seed: np.ndarray | None,
     options: IKOptions,
     collisions: Collisions | None,
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
+    annotate: bool = True,
 ) -> dict:
     res = ik.solve(
         robot,
@@ -68,7 +72,7 @@ def _solve_one(
         rng=rng,
         cancel=cancel,
         clearance=clearance_of(robot, collisions),
-        annotate=True,
+        annotate=annotate,
     )
     record_ik(res.success)
     return {
@@ -166,17 +170,35 @@ async def solve_ik(
     """
     check_budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
-    options = options_of(robot, body, body.num_solutions, body.rank_by)
-    collisions = collisions_of(request, body)
-    target = target_of(body.target, body.mode)
-    seed = group_seed(robot, group(robot, body.group), body.seed)
-    if body.timeout_ms <= INLINE_BUDGET_MS and collisions is None:
-        out = _solve_one(robot, target, seed, options, None, rng_of(body))
-    else:
-        out = await offload_cancellable(
-            request, _solve_one, robot, target, seed, options, collisions, rng_of(body)
-        )
+    solve, inline = prepare_ik(request, robot, body)
+    out = solve() if inline else await offload_cancellable(request, solve)
     return ORJSONResponse(out)
+
+
+def prepare_ik(
+    conn: HTTPConnection,
+    robot: RobotModel,
+    body: IKRequest,
+    last_q: np.ndarray | None = None,
+    annotate: bool = True,
+) -> tuple[Callable[..., dict], bool]:
+    """One IK query (HTTP or the stream) as a call giving its answer body, and whether it may
+    run on the event loop (a budget up to :data:`INLINE_BUDGET_MS`, no collision checks).
+
+    The call takes an optional ``cancel`` event (:func:`offload_cancellable`). ``last_q``
+    seeds the query when the body gives no ``seed`` (the stream's last solution); without
+    either, the solver's default (the middle of the joint limits). Without ``annotate``
+    (the stream's binary answers, which carry no labels) the solutions' ``branch`` and
+    ``manipulability`` are computed only where the ranking needs them: the same ``q``.
+    """
+    options = options_of(robot, body, body.num_solutions, body.rank_by)
+    collisions = collisions_of(conn, body)
+    target = target_of(body.target, body.mode)
+    seed = last_q if body.seed is None else group_seed(robot, group(robot, body.group), body.seed)
+    inline = body.timeout_ms <= INLINE_BUDGET_MS and collisions is None
+    return functools.partial(
+        _solve_one, robot, target, seed, options, collisions, rng_of(body), annotate=annotate
+    ), inline
 
 
 @router.post(

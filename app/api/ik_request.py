@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 import pinocchio as pin
-from fastapi import Request
+from starlette.requests import HTTPConnection
 
 from app.api.deps import scene_store
 from app.api.ik_schemas import IKTaskIn, Target
@@ -29,7 +29,7 @@ def target_of(target: Target, mode: str, field: str = "target") -> pin.SE3:
     return target_placement(target.position, target.orientation, target.matrix, mode, field)
 
 
-def check_budget(request: Request, timeout_ms: float) -> None:
+def check_budget(request: HTTPConnection, timeout_ms: float) -> None:
     """Refuse a per-target budget above the server's ``ik_max_timeout_ms`` (``timeout_ms``)."""
     cap = request.app.state.settings.ik_max_timeout_ms
     if timeout_ms > cap:
@@ -39,7 +39,7 @@ def check_budget(request: Request, timeout_ms: float) -> None:
 
 
 def check_request_budget(
-    request: Request, count: int, noun: str, timeout_ms: float, remedy: str, field: str
+    request: HTTPConnection, count: int, noun: str, timeout_ms: float, remedy: str, field: str
 ) -> None:
     """Refuse a request whose total budget, ``count`` solves × ``timeout_ms``, exceeds the
     server's ``ik_max_request_s`` (InvalidInputError naming ``field``; ``noun`` names what is
@@ -59,7 +59,7 @@ def check_request_budget(
 Collisions = tuple[tuple[Obstacle, ...], float, str]
 
 
-def collisions_of(request: Request, body: IKTaskIn) -> Collisions | None:
+def collisions_of(request: HTTPConnection, body: IKTaskIn) -> Collisions | None:
     """(obstacles, margin, geometry) for collision-aware IK, or None (validated here)."""
     if not body.avoid_collisions:
         for name in ("obstacles", "scene"):

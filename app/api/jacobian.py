@@ -11,6 +11,7 @@ from app.api.responses import ORJSONResponse
 from app.api.schemas import ConfigurationIn, RobotId
 from app.kinematics.groups import default_frame
 from app.kinematics.jacobian import Reference, frame_jacobian
+from app.kinematics.models import RobotModel
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["kinematics"])
 
@@ -54,20 +55,22 @@ async def compute_jacobian(
     robot_id: RobotId, body: JacobianRequest, reg: RegistryDep
 ) -> ORJSONResponse:
     """Geometric Jacobian of a frame at one configuration."""
-    robot = await load_robot(reg, robot_id)
+    return ORJSONResponse(jacobian_answer(await load_robot(reg, robot_id), body))
+
+
+def jacobian_answer(robot: RobotModel, body: JacobianRequest) -> dict:
+    """The body of a Jacobian answer (HTTP and the stream)."""
     grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     J = frame_jacobian(robot, q, frame, body.reference)
     names = robot.joint_names
     if grp is not None:  # the group's columns (a joint not moving the frame: a zero column)
         J, names = J[:, grp.indices], list(grp.joints)
-    return ORJSONResponse(
-        {
-            "robot_id": robot.id,
-            "frame": frame,
-            "reference": body.reference,
-            "q": q,
-            "jacobian": J,
-            "joint_names": names,
-        }
-    )
+    return {
+        "robot_id": robot.id,
+        "frame": frame,
+        "reference": body.reference,
+        "q": q,
+        "jacobian": J,
+        "joint_names": names,
+    }

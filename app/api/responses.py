@@ -15,7 +15,12 @@ class ORJSONResponse(Response):
     media_type = "application/json"
 
     def render(self, content: Any) -> bytes:
-        return orjson.dumps(content, option=orjson.OPT_SERIALIZE_NUMPY, default=_fallback)
+        return dumps(content)
+
+
+def dumps(content: Any) -> bytes:
+    """``content`` as JSON, the way every answer is sent (HTTP bodies, stream messages)."""
+    return orjson.dumps(content, option=orjson.OPT_SERIALIZE_NUMPY, default=_fallback)
 
 
 def _fallback(obj: Any) -> Any:

@@ -97,7 +97,7 @@ def test_budgets_above_5_ms_and_collision_checks_run_in_the_pool(
     real = ik_api.offload_cancellable
 
     async def spy(request, fn, *args, **kwargs):
-        offloaded.append(fn.__name__)
+        offloaded.append(getattr(fn, "func", fn).__name__)  # a partial
         return await real(request, fn, *args, **kwargs)
 
     monkeypatch.setattr(ik_api, "offload_cancellable", spy)
