@@ -273,10 +273,15 @@ class Search:
                 self.nearest = k_smallest(self.distances, NEAREST)
             if i < len(self.nearest):
                 return ch.restart_table[self.nearest[i]]
-        rng = self.rng
-        if rng is None:
+        if self.rng is None:
             return ch.restart_table[i % TABLE]
-        return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * rng.random(ch.k)
+        return self.random_start()
+
+    def random_start(self) -> np.ndarray:
+        """A configuration of the active joints drawn uniformly in the sampling box from
+        ``rng`` (TRAC-IK's random jump)."""
+        ch = self.ch
+        return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * self.rng.random(ch.k)
 
     # ------------------------------------------------------------------- result
     def result(self, method: str, t_start: float) -> IKResult:
