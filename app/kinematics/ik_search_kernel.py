@@ -24,7 +24,6 @@ State between calls
 ``st`` (int64): ``[iterations, restarts, phase, distances known, nearest sample, nearest
 ranked, cap, chunk, flags, stall, attempt cap, nearest count, nearest indices…]``; phase 0:
 the seed not checked yet, 1: a restart is due, 2: ``qa`` is the start of the next attempt.
-``qf`` (float64): ``[p_t (3), R_t row-major (9), tol_p², tol_r², K_t, best energy]``.
 ``cp``: the chain's constants packed once by :func:`pack_chain`.
 """
 
@@ -76,11 +75,13 @@ def _rank_nearest(d, near, count):  # pragma: no cover
 
 
 @jit
-def search(qa, q_ref, best_q, qf, st, d, cp, tab32, table):  # pragma: no cover
+def search(qa, q_ref, best_q, best, H, tol_p2, tol_r2, st, d, cp, tab32, table):  # pragma: no cover
     """Run the search from its state (module doc) for at most ``st[7]`` attempts.
 
     ``qa`` (k,) is the current start or, on ``CONVERGED``, the converged iterate;
-    ``best_q`` (k,) with ``qf[15]`` the lowest-energy unconverged iterate. ``tab32`` is the
+    ``best_q`` (k,) and ``best`` (1,) the lowest-energy unconverged iterate and its energy
+    ‖e‖²; ``H`` the target (4×4 homogeneous, root frame); ``tol_p2``, ``tol_r2`` the squared
+    tolerances (m², rad²). ``tab32`` is the
     restart table's poses ((13, N) float32: −2·[p | c·vec(R)] transposed, then ‖p‖² + 3c),
     ``table`` (N, k) its configurations. Returns the outcome.
     """
@@ -100,10 +101,13 @@ def search(qa, q_ref, best_q, qf, st, d, cp, tab32, table):  # pragma: no cover
     lo = cp[o : o + k]
     hi = cp[o + k : o + 2 * k]
     cont = cp[o + 2 * k : o + 3 * k] != 0.0
-    pt = qf[0:3]
-    Rt = qf[3:12].reshape((3, 3))
-    tol_p2, tol_r2, k_t = qf[12], qf[13], qf[14]
-    best = qf[15:16]
+    pt = np.empty(3)
+    Rt = np.empty((3, 3))
+    for i in range(3):
+        pt[i] = H[i, 3]
+        for j in range(3):
+            Rt[i, j] = H[i, j]
+    k_t = pt[0] * pt[0] + pt[1] * pt[1] + pt[2] * pt[2] + 3.0 * rot_w
     cap, chunk, flags = st[6], st[7], st[8]
     n_table = table.shape[0]
     n_near = st[11]
@@ -113,7 +117,7 @@ def search(qa, q_ref, best_q, qf, st, d, cp, tab32, table):  # pragma: no cover
         if flags & NEAREST_FIRST_ON and st[0] < cap:
             ep2, er2, tr = ik_kernel.pose_error(qa, C, t, prism, last_C, last_t, Rt, pt)
             if not (ep2 <= tol_p2 and er2 <= tol_r2):
-                _distances(qf, tab32, d, st)
+                _distances(pt, Rt, tab32, d, st)
                 d_seed = ep2 + (2.0 * rot_w) * (3.0 - tr)
                 # in float32, as NumPy 2 adds and compares a float32 with floats
                 # (Search.seed_is_far)
@@ -131,7 +135,7 @@ def search(qa, q_ref, best_q, qf, st, d, cp, tab32, table):  # pragma: no cover
             st[2] = 2
             if n_near > 0:
                 if st[3] == 0:
-                    _distances(qf, tab32, d, st)
+                    _distances(pt, Rt, tab32, d, st)
                 if i == 0:
                     qa[:] = table[st[4]]
                     continue
@@ -165,12 +169,14 @@ def search(qa, q_ref, best_q, qf, st, d, cp, tab32, table):  # pragma: no cover
 
 
 @jit
-def _distances(qf, tab32, d, st):  # pragma: no cover
+def _distances(pt, Rt, tab32, d, st):  # pragma: no cover
     """Pose distances of the table samples to the target (up to K_t) into ``d``, the
     nearest's index into ``st[4]`` (as :meth:`IKChain.sample_distances_argmin`)."""
     x = np.empty(12, dtype=np.float32)
-    for j in range(12):
-        x[j] = np.float32(qf[j])
+    for j in range(3):
+        x[j] = np.float32(pt[j])
+    for j in range(9):
+        x[3 + j] = np.float32(Rt[j // 3, j % 3])
     st[4] = ik_kernel.sample_distances(tab32[:12], tab32[12], x, d)
     st[3] = 1
 
@@ -183,10 +189,10 @@ def warm_up() -> None:
         np.eye(3)[None], np.zeros((1, 3)), z, np.eye(3), np.zeros(3), -np.ones(1),
         np.ones(1), z, 0.01, 1e-10, 0.2, 100.0, 1e-8, 2.0, 0.5, 0.2,
     )  # fmt: skip
-    qf = np.zeros(16)
-    qf[3], qf[7], qf[11], qf[12], qf[13], qf[15] = 1.0, 1.0, 1.0, 1e-10, 1e-10, np.inf
     st = np.zeros(HEADER + 4, dtype=np.int64)
     st[6], st[7], st[8], st[9], st[10], st[11] = 1, 1, 15, 2, 20, 4
     tab32 = np.zeros((13, 4), dtype=np.float32)
     d = np.empty(4, np.float32)
-    search(z.copy(), z.copy(), z.copy(), qf, st, d, cp, tab32, np.zeros((4, 1)))
+    best = np.array([np.inf])
+    table = np.zeros((4, 1))
+    search(z.copy(), z.copy(), z.copy(), best, np.eye(4), 1e-10, 1e-10, st, d, cp, tab32, table)

@@ -100,14 +100,10 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     Requires ``s.ch.compiled``."""
     ch = s.ch
     cp, tab32, template = ch.search_pack
-    target = s.target
-    pt = target.translation
-    qf = np.empty(16)
-    qf[:3] = pt
-    qf[3:12] = target.rotation.ravel()
-    qf[12], qf[13] = s.tol_p**2, s.tol_r**2
-    qf[14] = float(pt @ pt) + 3.0 * ROT_WEIGHT
-    qf[15] = best0 = s.best_energy
+    H = s.target.homogeneous
+    tol_p2, tol_r2 = s.tol_p**2, s.tol_r**2
+    best = np.array([s.best_energy])
+    best0 = s.best_energy
     st = template.copy()
     st[0], st[1] = s.iterations, s.restarts
     st[6] = cap = max_iterations if max_iterations is not None else 1 << 62
@@ -122,7 +118,7 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
         st[7] = 0  # the seed check only (as the Python loop), then the budget says stop
     try:
         while True:
-            outcome = search(qa, q_ref, best_q, qf, st, d, cp, tab32, table)
+            outcome = search(qa, q_ref, best_q, best, H, tol_p2, tol_r2, st, d, cp, tab32, table)
             st[7] = CHUNK_ATTEMPTS
             if outcome == ik_kernel.CAPPED:
                 return
@@ -143,5 +139,7 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
                 raise Cancelled()
     finally:
         s.iterations, s.restarts = int(st[0]), int(st[1])
-        if qf[15] < best0:
-            s.best_energy, s.best_q = float(qf[15]), s.wire(best_q)
+        if best[0] < best0:
+            s.best_energy = float(best[0])
+            if not s.solutions:  # (only a failure reports the best iterate)
+                s.best_q = s.wire(best_q)

@@ -156,7 +156,7 @@ def unreachable_detail(
     limit = reach * (1.0 + REACH_SLACK) + tol_p
     # hypot: no overflow of the squares. The distance over all three axes bounds the one over
     # the checked axes, so the common case (within reach) needs no row selection.
-    if math.hypot(*diff) <= limit:
+    if math.hypot(*diff.tolist()) <= limit:
         return None
     rows = task.rows
     d = math.hypot(*(float(diff[i]) for i in rows[rows < 3]))

@@ -72,6 +72,12 @@ class IKChain:
         self.cols_sel = _as_slice(self.cols)
         self.plain_q_sel = _as_slice(self.plain_q) if not self.has_continuous else self.plain_q
         self.mid_range = robot.mid_range()
+        #: Every wire joint's limits as lists (the verification's check, no NumPy calls).
+        self.wire_lower, self.wire_upper = robot.lower.tolist(), robot.upper.tolist()
+        #: Whether a wire configuration is Pinocchio's as is (no conversion to make).
+        self.wire_is_pin = robot.model.nq == robot.n and np.array_equal(
+            robot.to_pin(np.arange(robot.n, dtype=float)), np.arange(robot.n)
+        )
         #: Closed-form geometry of the chain, set on first use by ``analytic_ik``.
         self.closed_form: tuple | None = None
         #: Branch structure (:func:`app.kinematics.ik.branches.branch_form`); False until
