@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Literal, NamedTuple
 
 import numpy as np
 import pinocchio as pin
@@ -139,9 +139,9 @@ class Task:
         return self.rows.size == 6 and self.sw is None
 
 
-@dataclass(frozen=True, slots=True)
-class IKProblem:
-    """One validated query: what :class:`~app.kinematics.ik.search.Search` works on.
+class IKProblem(NamedTuple):
+    """One validated query: what :class:`~app.kinematics.ik.search.Search` works on
+    (immutable; a named tuple, built once per query at a fraction of a dataclass's cost).
 
     Attributes
     ----------

@@ -182,7 +182,10 @@ def representatives(
     if wanted == 1 and rank_by == "seed_distance" and not annotate and clearance is None:
         if len(solutions) == 1 and not robot.has_continuous:  # the hot path: nothing to rank
             only = solutions[0]
-            only.seed_distance = float(np.abs(only.q - seed).max(initial=0.0))
+            only.seed_distance = max(
+                (abs(a - b) for a, b in zip(only.q.tolist(), seed.tolist(), strict=True)),
+                default=0.0,
+            )
             return [only]
         best, best_order = solutions[0], (math.inf, math.inf)
         for s in solutions:
