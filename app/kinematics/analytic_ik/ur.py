@@ -52,6 +52,8 @@ class URType:
     K: np.ndarray  # (6, 3, 3) cross-product matrices of the ω_i
     M: pin.SE3  # frame placement at q = 0
     arm: Planar2  # the 2-link arm of axes 2, 3 with tip on axis 4
+    #: The geometry as the compiled form's arguments (C-ordered arrays), built once.
+    consts: tuple = ()
 
 
 def _line_intersection(p1, w1, p2, w2) -> np.ndarray | None:
@@ -105,7 +107,12 @@ def ur_geometry(robot: RobotModel, active: np.ndarray, frame_id: int) -> URType 
         return None
     arm = Planar2(p[1].copy(), u, v, r1, r2, float(s[2]))
     K = np.array([pin.skew(x) for x in w])
-    return URType(w, p, h, s, c0, K, M, arm)
+    c = np.ascontiguousarray
+    consts = (w, p, h, s, c0, c(M.rotation), c(M.translation), arm.origin, arm.u, arm.v)
+    consts += (arm.r1, arm.r2, arm.sign2)
+    return URType(
+        w, p, h, s, c0, K, M, arm, tuple(c(x) if isinstance(x, np.ndarray) else x for x in consts)
+    )
 
 
 def _nearest_first(angles: list[float], seed: float) -> list[float]:
@@ -318,13 +325,8 @@ def ur_candidates_compiled(
     """The candidates of :func:`ur_solutions` (same order), moved into the limits as
     :func:`into_limits` does, from the compiled form: an (m, 6) array, m ≤ 8."""
     out = np.empty((8, 6))
-    a = geo.arm
     c = np.ascontiguousarray
-    n = _ur_all(
-        geo.w, geo.p, geo.h, geo.s, geo.c0, c(geo.M.rotation), c(geo.M.translation),
-        a.origin, a.u, a.v, a.r1, a.r2, a.sign2,
-        c(target.rotation), c(target.translation), seed, out,
-    )  # fmt: skip
+    n = _ur_all(*geo.consts, c(target.rotation), c(target.translation), seed, out)
     _into_limits_nb(out, n, lower, upper, seed)
     return out[:n]
 
