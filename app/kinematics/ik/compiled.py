@@ -1,10 +1,12 @@
-"""The compiled driver: the search's attempts run by :func:`app.kinematics.ik_kernel.attempt`.
+"""The compiled driver: the numeric search run by :func:`app.kinematics.ik_search_kernel.search`.
 
-For the full pose (all six rows, unit weights) on a chain the kernel supports, each attempt
-(at most :data:`~app.kinematics.ik.dls.ATTEMPT_CAP` iterations, a few tens of µs) runs
-compiled; this driver does what :func:`app.kinematics.ik.dls.run_python` does between
-attempts (the nearest-sample jump from a far seed, restarts, the budget, cancellation,
-offering converged iterates to the search), so both loops take the same iterates.
+For the full pose (all six rows, unit weights) on a chain the kernel supports, the whole
+search of :func:`app.kinematics.ik.dls.run_python` (the nearest-sample jump from a far seed,
+the attempts of :func:`app.kinematics.ik_kernel.attempt`, the restarts) runs compiled, in
+chunks of :data:`CHUNK_ATTEMPTS` attempts; between chunks this driver reads the budget's
+:data:`clock` and the cancel flag, and it offers every converged iterate to the search
+(:meth:`~app.kinematics.ik.search.Search.offer`: Pinocchio's verification) before resuming.
+Both loops take the same iterates. :func:`pack` builds the kernel's per-chain constants once.
 """
 
 from __future__ import annotations
