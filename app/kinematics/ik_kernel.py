@@ -75,15 +75,14 @@ def jit(fn):
 
 
 @jit
-def _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, want_j):  # pragma: no cover
+def _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, want_j, tmp):  # pragma: no cover
     """Pose (R (3, 3), p (3,)) of the frame and, if ``want_j``, its world Jacobian J (6, k)
-    at the chain configuration ``qa`` (k,): written into R, p, J."""
+    at the chain configuration ``qa`` (k,): written into R, p, J (``tmp``: (3, 3) scratch)."""
     k = qa.shape[0]
     for i in range(3):
         p[i] = 0.0
         for j in range(3):
             R[i, j] = 1.0 if i == j else 0.0
-    tmp = np.empty((3, 3))
     for s in range(k):
         # fixed placement: p += R t_s ; R = R C_s
         for i in range(3):
@@ -196,10 +195,10 @@ def _solve_spd(A, b, x):  # pragma: no cover
 
 
 @jit
-def _dls(J, e, lam2, locked, nd):  # pragma: no cover
-    """nd = Jᵀ (J Jᵀ + λ² I)⁻¹ e over the unlocked columns (locked columns count as 0)."""
+def _dls(J, e, lam2, locked, nd, A, y):  # pragma: no cover
+    """nd = Jᵀ (J Jᵀ + λ² I)⁻¹ e over the unlocked columns (locked columns count as 0);
+    ``A`` (6, 6) and ``y`` (6,) are scratch."""
     k = J.shape[1]
-    A = np.empty((6, 6))
     for i in range(6):
         for j in range(i + 1):
             v = 0.0
@@ -209,7 +208,6 @@ def _dls(J, e, lam2, locked, nd):  # pragma: no cover
             A[i, j] = v
             A[j, i] = v
         A[i, i] += lam2
-    y = np.empty(6)
     _solve_spd(A, e, y)
     for s in range(k):
         if locked[s]:
@@ -257,7 +255,7 @@ def pose_error(qa, C, t, prism, last_C, last_t, Rt, pt):  # pragma: no cover
     R = np.empty((3, 3))
     p = np.empty(3)
     J = np.empty((6, k))
-    _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, False)
+    _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, False, np.empty((3, 3)))
     Re = np.empty((3, 3))
     for i in range(3):
         for j in range(3):
@@ -301,13 +299,16 @@ def attempt(  # pragma: no cover
     q_new = np.empty(k)
     locked = np.zeros(k, dtype=np.bool_)
     none_locked = np.zeros(k, dtype=np.bool_)
+    tmp = np.empty((3, 3))
+    A = np.empty((6, 6))
+    y = np.empty(6)
     best_attempt = np.inf
     stall = 0
     it = 0
     while True:
         if it >= max_iters:
             return CAPPED, it
-        _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, True)
+        _pose_jacobian(qa, C, t, prism, last_C, last_t, R, p, J, True, tmp)
         it += 1
         for i in range(3):
             for j in range(3):
@@ -343,11 +344,11 @@ def attempt(  # pragma: no cover
                 for s in range(k):
                     v += J[i, s] * z[s]
                 rhs[i] = v
-            _dls(J, rhs, lam2, none_locked, nd)
+            _dls(J, rhs, lam2, none_locked, nd, A, y)
             for s in range(k):
                 nd[s] -= z[s]
         else:
-            _dls(J, e, lam2, none_locked, nd)
+            _dls(J, e, lam2, none_locked, nd, A, y)
         for s in range(k):
             q_old[s] = qa[s]
         clipped = _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa)
@@ -360,7 +361,7 @@ def attempt(  # pragma: no cover
                 if locked[s]:
                     n_locked += 1
             if 0 < n_locked < k:
-                _dls(J, e, lam2, locked, nd)
+                _dls(J, e, lam2, locked, nd, A, y)
                 _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa)
 
 
@@ -414,7 +415,7 @@ class CompiledChain:
         R, p, J = np.empty((3, 3)), np.empty(3), np.empty((6, k))
         _pose_jacobian(
             np.ascontiguousarray(qa, dtype=np.float64),
-            self.C, self.t, self.prism, self.last_C, self.last_t, R, p, J, True,
+            self.C, self.t, self.prism, self.last_C, self.last_t, R, p, J, True, np.empty((3, 3)),
         )  # fmt: skip
         return R, p, J
 

@@ -52,6 +52,8 @@ class URType:
     K: np.ndarray  # (6, 3, 3) cross-product matrices of the ω_i
     M: pin.SE3  # frame placement at q = 0
     arm: Planar2  # the 2-link arm of axes 2, 3 with tip on axis 4
+    #: The geometry as the compiled form's arguments (C-ordered arrays), built once.
+    consts: tuple = ()
 
 
 def _line_intersection(p1, w1, p2, w2) -> np.ndarray | None:
@@ -105,7 +107,12 @@ def ur_geometry(robot: RobotModel, active: np.ndarray, frame_id: int) -> URType 
         return None
     arm = Planar2(p[1].copy(), u, v, r1, r2, float(s[2]))
     K = np.array([pin.skew(x) for x in w])
-    return URType(w, p, h, s, c0, K, M, arm)
+    c = np.ascontiguousarray
+    consts = (w, p, h, s, c0, c(M.rotation), c(M.translation), arm.origin, arm.u, arm.v)
+    consts += (arm.r1, arm.r2, arm.sign2)
+    return URType(
+        w, p, h, s, c0, K, M, arm, tuple(c(x) if isinstance(x, np.ndarray) else x for x in consts)
+    )
 
 
 def _nearest_first(angles: list[float], seed: float) -> list[float]:
@@ -220,42 +227,67 @@ def _order2(vals, n, seed):  # pragma: no cover
 
 
 @jit
+def _dot(a, b):  # pragma: no cover
+    """a·b of two 3-vectors (inline: NumPy's ``@`` is a BLAS call per product in Numba)."""
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+@jit
+def _mv(M, x):  # pragma: no cover
+    """M x for a 3×3 M (any layout, e.g. a transposed view) and a 3-vector."""
+    y = np.empty(3)
+    for i in range(3):
+        y[i] = M[i, 0] * x[0] + M[i, 1] * x[1] + M[i, 2] * x[2]
+    return y
+
+
+@jit
+def _mm(A, B):  # pragma: no cover
+    """A B for 3×3 matrices (any layout)."""
+    C = np.empty((3, 3))
+    for i in range(3):
+        for j in range(3):
+            C[i, j] = A[i, 0] * B[0, j] + A[i, 1] * B[1, j] + A[i, 2] * B[2, j]
+    return C
+
+
+@jit
 def _ur_all(  # pragma: no cover
     w, p, h, s, c0, MR, Mp, origin, u, v, r1, r2, sign2, Rt, pt, seed, out
 ):
     """Every UR-type branch (:func:`ur_solutions`, same order) into ``out`` (8, 6);
     returns how many."""
-    Rd = Rt @ MR.T
-    c_loc = MR.T @ (c0 - Mp)
-    c_d = Rt @ c_loc + pt
+    Rd = _mm(Rt, MR.T)
+    c_loc = _mv(MR.T, c0 - Mp)
+    c_d = _mv(Rt, c_loc) + pt
     c0_p4 = c0 - p[3]
     l1 = math.hypot(r1[0], r1[1])
     l2 = math.hypot(r2[0], r2[1])
     beta = math.atan2(r2[1], r2[0]) - math.atan2(r1[1], r1[0])
     q1s = np.empty(2)
     q5s = np.empty(2)
-    n1 = _sp4_nb(c_d - p[0], w[0], h, h @ (c0 - p[0]), q1s)
+    n1 = _sp4_nb(c_d - p[0], w[0], h, _dot(h, c0 - p[0]), q1s)
     _order2(q1s, n1, seed[0])
     n = 0
     for i1 in range(n1):
         q1 = q1s[i1]
         R1 = _rot_nb(w[0], q1)
-        R1h = R1 @ h
-        RdT_R1h = Rd.T @ R1h
-        n5 = _sp4_nb(h, w[4], w[5], R1h @ (Rd @ w[5]), q5s)
+        R1h = _mv(R1, h)
+        RdT_R1h = _mv(Rd.T, R1h)
+        n5 = _sp4_nb(h, w[4], w[5], _dot(R1h, _mv(Rd, w[5])), q5s)
         _order2(q5s, n5, seed[4])
-        arm_base = p[0] + R1.T @ (c_d - p[0])
+        arm_base = p[0] + _mv(R1.T, c_d - p[0])
         for i5 in range(n5):
             q5 = q5s[i5]
-            R5T = _rot_nb(w[4], q5).T.copy()
-            q6 = _sp1_nb(w[5], RdT_R1h, R5T @ h)
-            Rth = R1.T @ Rd @ _rot_nb(w[5], -q6) @ R5T
-            theta = _sp1_nb(h, u, Rth @ u)
-            wrist = arm_base - _rot_nb(h, theta) @ c0_p4
+            R5T = _rot_nb(w[4], q5).T
+            q6 = _sp1_nb(w[5], RdT_R1h, _mv(R5T, h))
+            Rth = _mm(_mm(_mm(R1.T, Rd), _rot_nb(w[5], -q6)), R5T)
+            theta = _sp1_nb(h, u, _mv(Rth, u))
+            wrist = arm_base - _mv(_rot_nb(h, theta), c0_p4)
             # planar 2-link (axes 2, 3) to the wrist point
             d = wrist - origin
-            t0 = d @ u
-            t1 = d @ v
+            t0 = _dot(d, u)
+            t1 = _dot(d, v)
             c2 = (t0 * t0 + t1 * t1 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
             if abs(c2) > 1.0 + REACH:
                 continue
@@ -318,13 +350,8 @@ def ur_candidates_compiled(
     """The candidates of :func:`ur_solutions` (same order), moved into the limits as
     :func:`into_limits` does, from the compiled form: an (m, 6) array, m ≤ 8."""
     out = np.empty((8, 6))
-    a = geo.arm
     c = np.ascontiguousarray
-    n = _ur_all(
-        geo.w, geo.p, geo.h, geo.s, geo.c0, c(geo.M.rotation), c(geo.M.translation),
-        a.origin, a.u, a.v, a.r1, a.r2, a.sign2,
-        c(target.rotation), c(target.translation), seed, out,
-    )  # fmt: skip
+    n = _ur_all(*geo.consts, c(target.rotation), c(target.translation), seed, out)
     _into_limits_nb(out, n, lower, upper, seed)
     return out[:n]
 

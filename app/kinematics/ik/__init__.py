@@ -8,8 +8,8 @@ The package, one concept per module:
   active joints, restart table and its poses);
 - :mod:`.search`: one query's state, the verification of candidates, restarts, the result;
 - :mod:`.dls`: the damped least-squares loop in Python (every mode, every chain);
-- :mod:`.compiled`: the driver of the compiled attempts (:mod:`app.kinematics.ik_kernel`),
-  full pose only;
+- :mod:`.compiled`: the driver of the compiled search (:mod:`app.kinematics.ik_search_kernel`
+  around the attempts of :mod:`app.kinematics.ik_kernel`), full pose only;
 - here: :func:`solve`, which ties them together.
 
 Problem
@@ -157,7 +157,8 @@ def solve(
         so answers are reproducible).
     cancel
         Optional event: once set (the caller's client went away), the search stops within
-        one iteration (the Python loop) or one attempt (compiled, ≤ 20 iterations) and
+        one iteration (the Python loop) or one chunk of attempts (compiled,
+        :data:`~app.kinematics.ik.compiled.CHUNK_ATTEMPTS` attempts of ≤ 20 iterations) and
         :class:`~app.kinematics.errors.Cancelled` is raised.
     clearance
         Optional ``q ↦`` smallest robot–obstacle distance (m)

@@ -152,12 +152,14 @@ def unreachable_detail(
     if bound is None:
         return None
     b, reach = bound
-    diff = target.translation - b
+    x, y, z = target.translation.tolist()
+    b0, b1, b2 = b.tolist()
     limit = reach * (1.0 + REACH_SLACK) + tol_p
     # hypot: no overflow of the squares. The distance over all three axes bounds the one over
     # the checked axes, so the common case (within reach) needs no row selection.
-    if math.hypot(*diff) <= limit:
+    if math.hypot(x - b0, y - b1, z - b2) <= limit:
         return None
+    diff = target.translation - b
     rows = task.rows
     d = math.hypot(*(float(diff[i]) for i in rows[rows < 3]))
     if d <= limit:

@@ -21,7 +21,7 @@ import pinocchio as pin
 from app.kinematics import analytic_ik, ik_kernel
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group
-from app.kinematics.ik.compiled import warm_up
+from app.kinematics.ik import compiled as driver  # imported first by the package: no cycle
 from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 
 #: Weight of the rotation distance (‖R − R_t‖²_F) against the position distance (m²) in
@@ -72,6 +72,12 @@ class IKChain:
         self.cols_sel = _as_slice(self.cols)
         self.plain_q_sel = _as_slice(self.plain_q) if not self.has_continuous else self.plain_q
         self.mid_range = robot.mid_range()
+        #: Every wire joint's limits as lists (the verification's check, no NumPy calls).
+        self.wire_lower, self.wire_upper = robot.lower.tolist(), robot.upper.tolist()
+        #: Whether a wire configuration is Pinocchio's as is (no conversion to make).
+        self.wire_is_pin = robot.model.nq == robot.n and np.array_equal(
+            robot.to_pin(np.arange(robot.n, dtype=float)), np.arange(robot.n)
+        )
         #: Closed-form geometry of the chain, set on first use by ``analytic_ik``.
         self.closed_form: tuple | None = None
         #: Branch structure (:func:`app.kinematics.ik.branches.branch_form`); False until
@@ -90,9 +96,11 @@ class IKChain:
             if ik_kernel.available()
             else None
         )
-        warm_up()  # compiled now, outside any query's time budget
+        driver.warm_up()  # compiled now, outside any query's time budget
         analytic_ik.prepare(robot, self)
         self.cont_mask = cont
+        #: The compiled search's constants (:func:`.compiled.pack`), with ``compiled``.
+        self.search_pack = driver.pack(self) if self.compiled is not None else None
 
     def sample_poses(self) -> tuple[np.ndarray, np.ndarray]:
         """Poses of the restart table: M = −2·[p | c·vec(R)] (N, 12) and ‖p‖² + 3c (N,).

@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from operator import sub
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -182,7 +183,8 @@ def representatives(
     if wanted == 1 and rank_by == "seed_distance" and not annotate and clearance is None:
         if len(solutions) == 1 and not robot.has_continuous:  # the hot path: nothing to rank
             only = solutions[0]
-            only.seed_distance = float(np.abs(only.q - seed).max(initial=0.0))
+            moves = map(abs, map(sub, only.q.tolist(), seed.tolist()))
+            only.seed_distance = max(moves, default=0.0)
             return [only]
         best, best_order = solutions[0], (math.inf, math.inf)
         for s in solutions:

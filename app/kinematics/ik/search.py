@@ -77,6 +77,14 @@ class IKResult:
     detail: str | None = None
 
 
+def _within(q: list[float], lower: list[float], upper: list[float]) -> bool:
+    """Whether every value lies within its limits (False for NaN)."""
+    for v, lo, hi in zip(q, lower, upper, strict=True):
+        if not lo <= v <= hi:
+            return False
+    return True
+
+
 def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
     """Position error (m), rotation angle (rad) and e = [p − p_t; log3(R R_tᵀ)] (world axes)."""
     ep = T.translation - target.translation
@@ -159,29 +167,42 @@ class Search:
         return q
 
     def offer(self, qa: np.ndarray) -> bool:
-        """Verify a candidate (active joints) by FK, limits and ``accept``; keep if new."""
+        """Verify a candidate (active joints) by FK, limits and ``accept``; keep if new.
+
+        The check is Pinocchio's, independent of how the candidate was found: the wire
+        configuration within the joint limits, ``pin.forwardKinematics`` and
+        ``updateFramePlacement`` of the frame, its errors against the target within the
+        tolerances (on the checked components).
+        """
         robot = self.robot
-        q = self.wire(qa)
+        q = self.q_seed.copy()
+        q[self.ch.active] = qa
         if robot.has_continuous:
             c = robot._cont_wire
             q[c] = wrap_angle(q[c])
-        if (q < robot.lower).any() or (q > robot.upper).any():
+        if not _within(q.tolist(), self.ch.wire_lower, self.ch.wire_upper):
             if self.outside_limits is None:
                 self._note_outside_limits(q)
             return False
-        model, data = robot.model, robot.data
-        pin.forwardKinematics(model, data, robot.to_pin(q))
-        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        model, data, ch = robot.model, robot.data, self.ch
+        pin.forwardKinematics(model, data, q if ch.wire_is_pin else robot.to_pin(q))
+        T = pin.updateFramePlacement(model, data, ch.frame_id)
         target = self.target
-        dp = T.translation - target.translation
-        phi = pin.log3(T.rotation @ target.rotation.T)
-        ep2, er2 = float(dp @ dp), float(phi @ phi)
-        # hypot: no overflow of the squares (the errors of huge robots stay numbers)
-        ep_full, er_full = math.hypot(*dp), math.hypot(*phi)
         if self.full_pose:
-            ep, er, energy = ep_full, er_full, ep2 + er2
+            # T_t⁻¹·T = (R_tᵀR, R_tᵀ(p − p_t)): the same two norms as p − p_t and
+            # log3(R R_tᵀ) in world axes, in one Pinocchio call
+            E = target.actInv(T)
+            x, y, z = E.translation.tolist()
+            a, b, c = pin.log3(E.rotation).tolist()
+            # hypot: no overflow of the squares (the errors of huge robots stay numbers)
+            ep = ep_full = math.hypot(x, y, z)
+            er = er_full = math.hypot(a, b, c)
+            energy = x * x + y * y + z * z + a * a + b * b + c * c
         else:
-            e = np.concatenate((dp, phi))
+            e = np.concatenate(
+                (T.translation - target.translation, pin.log3(T.rotation @ target.rotation.T))
+            )
+            ep_full, er_full = math.hypot(*e[:3].tolist()), math.hypot(*e[3:].tolist())
             ep, er = self._checked(e)
             energy = self._energy(e)
         if energy < self.best_energy:
@@ -273,10 +294,15 @@ class Search:
                 self.nearest = k_smallest(self.distances, NEAREST)
             if i < len(self.nearest):
                 return ch.restart_table[self.nearest[i]]
-        rng = self.rng
-        if rng is None:
+        if self.rng is None:
             return ch.restart_table[i % TABLE]
-        return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * rng.random(ch.k)
+        return self.random_start()
+
+    def random_start(self) -> np.ndarray:
+        """A configuration of the active joints drawn uniformly in the sampling box from
+        ``rng`` (TRAC-IK's random jump)."""
+        ch = self.ch
+        return ch.sample_lo + (ch.sample_hi - ch.sample_lo) * self.rng.random(ch.k)
 
     # ------------------------------------------------------------------- result
     def result(self, method: str, t_start: float) -> IKResult:

@@ -1,0 +1,179 @@
+"""The compiled whole search (app.kinematics.ik_search_kernel, driven by ik.compiled): it
+cannot make the solver report a wrong answer (every converged iterate is verified by
+Pinocchio, checked here against yourdfpy), it takes the Python loop's iterates on the paths
+that resume it (rejected solutions, several solutions, random restarts), and its budget is
+read between chunks of attempts from a clock the tests control."""
+
+from __future__ import annotations
+
+import threading
+
+import numpy as np
+import pytest
+
+from app.kinematics import ik, ik_kernel, ik_search_kernel
+from app.kinematics.errors import Cancelled
+from app.kinematics.ik import compiled
+from app.kinematics.ik.dls import ATTEMPT_CAP
+from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik.problem import IKOptions
+from app.kinematics.models import RobotModel
+from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
+
+pytestmark = pytest.mark.skipif(not ik_kernel.available(), reason="Numba not installed")
+
+#: A budget no machine runs out of: the iteration cap ends every search.
+NO_DEADLINE_MS = 60_000
+#: Tolerances no iterate meets (rounding alone is larger): a search that never converges
+#: on a reachable target, so that the budget or the cap ends it.
+UNMET = (1e-300, 1e-300)
+
+
+def _python_twin(robot: RobotModel, frame: str) -> RobotModel:
+    """The same robot, solved by the Python loop (no compiled chain)."""
+    twin = RobotModel(robot.id, robot.urdf_text, package_dirs=robot.package_dirs,
+                      srdf_text=robot.srdf_text, ee_frame=robot.ee_frame)  # fmt: skip
+    ik_chain(twin, frame).compiled = None
+    return twin
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
+def test_a_kernel_that_lies_about_convergence_is_not_believed(
+    registry, monkeypatch, robot_id: str, frame: str
+) -> None:
+    """The kernel reports CONVERGED with a configuration 0.01 rad off on the first joint:
+    the verification refuses every one, so no success, and the best iterate reported has
+    its true error (yourdfpy's FK), not the kernel's."""
+    robot = registry.get(robot_id)
+    real = ik_search_kernel.search
+
+    def lying(qa, *args):
+        outcome = real(qa, *args)
+        if outcome == ik_kernel.CONVERGED:
+            qa[0] += 0.01 if qa[0] < 0.0 else -0.01
+        return outcome
+
+    monkeypatch.setattr(ik_search_kernel, "search", lying)
+    rng = np.random.default_rng(3)
+    options = IKOptions(frame=frame, timeout_ms=NO_DEADLINE_MS, max_iterations=200, analytic=False)
+    for _ in range(5):
+        target = reference_pose(robot, random_q(robot, rng), frame)
+        res = ik.solve(robot, se3(target), options)
+        assert not res.success and res.solutions == []
+        dp, dr = pose_error(reference_pose(robot, res.q, frame), target)
+        assert res.position_error == pytest.approx(dp, abs=1e-9)
+        assert res.orientation_error == pytest.approx(dr, abs=1e-9)
+        assert dp > TOL or dr > TOL
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
+def test_fast_path_answers_reach_the_target_by_yourdfpy(registry, robot_id, frame) -> None:
+    """The benchmark's case (mid-range seed, one solution, numeric only): every answer is
+    within the tolerances by an independent FK and within the limits."""
+    robot = registry.get(robot_id)
+    rng = np.random.default_rng(17)
+    options = IKOptions(frame=frame, timeout_ms=NO_DEADLINE_MS, max_iterations=2000,
+                        analytic=False)  # fmt: skip
+    for _ in range(40):
+        target = reference_pose(robot, random_q(robot, rng), frame)
+        res = ik.solve(robot, se3(target), options)
+        assert res.success
+        assert np.all(res.q >= robot.lower) and np.all(res.q <= robot.upper)
+        dp, dr = pose_error(reference_pose(robot, res.q, frame), target)
+        assert dp <= TOL and dr <= TOL
+
+
+@pytest.mark.parametrize("case", ["reject_first", "three_solutions", "random_restarts"])
+def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) -> None:
+    """Searches that return to Python mid-way (a converged iterate refused by ``accept``,
+    several solutions wanted, random restarts drawn by the caller) take the same iterates
+    as the Python loop: same counts, same solutions."""
+    robot = registry.get("panda")
+    frame = "panda_link8"
+    twin = _python_twin(robot, frame)
+    options = IKOptions(
+        frame=frame,
+        timeout_ms=NO_DEADLINE_MS,
+        max_iterations=400,
+        analytic=False,
+        num_solutions=3 if case == "three_solutions" else 1,
+    )
+    rng = np.random.default_rng(11)
+    most_restarts = 0
+    for _ in range(4):
+        target = se3(reference_pose(robot, random_q(robot, rng), frame))
+        seed = random_q(robot, rng)
+        if case == "random_restarts":  # mostly out of reach (within the reach bound)
+            target.translation = target.translation * 1.4
+        answers = []
+        for r in (robot, twin):
+            seen: list[int] = []
+
+            def accept(q: np.ndarray, seen: list[int] = seen) -> bool:
+                seen.append(1)
+                return len(seen) > 2  # the first two converged iterates are refused
+
+            kwargs: dict = {"seed": seed}
+            if case == "reject_first":
+                kwargs["accept"] = accept
+            if case == "random_restarts":
+                kwargs["rng"] = np.random.default_rng(5)
+            answers.append(ik.solve(r, target, options, **kwargs))
+        a, b = answers
+        assert (a.success, a.status, a.iterations, a.restarts) == (
+            b.success, b.status, b.iterations, b.restarts,
+        )  # fmt: skip
+        assert len(a.solutions) == len(b.solutions)
+        for sa, sb in zip(a.solutions, b.solutions, strict=True):
+            np.testing.assert_allclose(sa.q, sb.q, rtol=0, atol=1e-8)
+        np.testing.assert_allclose(a.q, b.q, rtol=0, atol=1e-8)
+        most_restarts = max(most_restarts, a.restarts)
+    if case == "random_restarts":
+        assert most_restarts > 40  # past the nearest table samples: drawn from rng
+
+
+class _FakeClock:
+    """A clock that stands still for ``reads`` reads, then jumps past any deadline; it can
+    set an event on the jump instead."""
+
+    def __init__(self, reads: int, cancel: threading.Event | None = None) -> None:
+        self.reads, self.count, self.cancel = reads, 0, cancel
+
+    def __call__(self) -> float:
+        self.count += 1
+        if self.count <= self.reads:
+            return 0.0
+        if self.cancel is not None:
+            self.cancel.set()
+            return 0.0
+        return float("inf")
+
+
+@pytest.mark.parametrize("reads", [0, 1, 3])
+def test_deadline_is_read_between_chunks_of_attempts(registry, monkeypatch, reads) -> None:
+    """A search that never converges and has no iteration cap: the search ends when the clock says
+    the deadline passed, after one chunk of attempts per clock read in time."""
+    robot = registry.get("panda")
+    clock = _FakeClock(reads)
+    monkeypatch.setattr(compiled, "clock", clock)
+    target = se3(reference_pose(robot, robot.mid_range(), "panda_link8"))
+    options = IKOptions(frame="panda_link8", timeout_ms=1e9, analytic=False, tolerance=UNMET)
+    res = ik.solve(robot, target, options)
+    assert not res.success and res.status == "timeout"
+    # the first read before any attempt, then one read after each chunk
+    assert clock.count == max(reads, 1) + 1
+    chunk = compiled.CHUNK_ATTEMPTS
+    assert reads * chunk <= res.iterations <= 1 + reads * chunk * ATTEMPT_CAP
+
+
+def test_cancel_is_read_between_chunks(registry, monkeypatch) -> None:
+    """A cancel set while the search runs stops it at the next chunk boundary."""
+    robot = registry.get("panda")
+    cancel = threading.Event()
+    clock = _FakeClock(2, cancel)
+    monkeypatch.setattr(compiled, "clock", clock)
+    target = se3(reference_pose(robot, robot.mid_range(), "panda_link8"))
+    options = IKOptions(frame="panda_link8", timeout_ms=1e9, analytic=False, tolerance=UNMET)
+    with pytest.raises(Cancelled):
+        ik.solve(robot, target, options, cancel=cancel)
+    assert clock.count == 3
