@@ -6,6 +6,7 @@ import functools
 import threading
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 import pinocchio as pin
@@ -175,6 +176,43 @@ async def solve_ik(
     return ORJSONResponse(out)
 
 
+@dataclass(frozen=True, slots=True)
+class IKPlan:
+    """What an IK request's options make, whatever its target and seed: the core's options,
+    the collisions to avoid, the request (its ``random_seed`` and ``group``), and whether it
+    may run on the event loop (a budget up to :data:`INLINE_BUDGET_MS`, no collision checks).
+    The stream keeps one for its binary IK frames (:mod:`app.api.stream`)."""
+
+    options: IKOptions
+    collisions: Collisions | None
+    body: IKRequest
+    inline: bool
+
+    def call(
+        self, robot: RobotModel, target: pin.SE3, seed: np.ndarray | None, annotate: bool = True
+    ) -> Callable[..., dict]:
+        """The query as a call giving its answer body; it takes an optional ``cancel``
+        event (:func:`offload_cancellable`)."""
+        return functools.partial(
+            _solve_one,
+            robot,
+            target,
+            seed,
+            self.options,
+            self.collisions,
+            rng_of(self.body),
+            annotate=annotate,
+        )
+
+
+def plan_ik(conn: HTTPConnection, robot: RobotModel, body: IKRequest) -> IKPlan:
+    """The :class:`IKPlan` of ``body`` (validated by the core, naming the fields)."""
+    options = options_of(robot, body, body.num_solutions, body.rank_by)
+    collisions = collisions_of(conn, body)
+    inline = body.timeout_ms <= INLINE_BUDGET_MS and collisions is None
+    return IKPlan(options, collisions, body, inline)
+
+
 def prepare_ik(
     conn: HTTPConnection,
     robot: RobotModel,
@@ -183,22 +221,18 @@ def prepare_ik(
     annotate: bool = True,
 ) -> tuple[Callable[..., dict], bool]:
     """One IK query (HTTP or the stream) as a call giving its answer body, and whether it may
-    run on the event loop (a budget up to :data:`INLINE_BUDGET_MS`, no collision checks).
+    run on the event loop (:class:`IKPlan`).
 
-    The call takes an optional ``cancel`` event (:func:`offload_cancellable`). ``last_q``
-    seeds the query when the body gives no ``seed`` (the stream's last solution); without
-    either, the solver's default (the middle of the joint limits). Without ``annotate``
-    (the stream's binary answers, which carry no labels) the solutions' ``branch`` and
-    ``manipulability`` are computed only where the ranking needs them: the same ``q``.
+    ``last_q`` seeds the query when the body gives no ``seed`` (the stream's last solution);
+    without either, the solver's default (the middle of the joint limits). Without
+    ``annotate`` (the stream's binary answers, which carry no labels) the solutions'
+    ``branch`` and ``manipulability`` are computed only where the ranking needs them: the
+    same ``q``.
     """
-    options = options_of(robot, body, body.num_solutions, body.rank_by)
-    collisions = collisions_of(conn, body)
+    plan = plan_ik(conn, robot, body)
     target = target_of(body.target, body.mode)
     seed = last_q if body.seed is None else group_seed(robot, group(robot, body.group), body.seed)
-    inline = body.timeout_ms <= INLINE_BUDGET_MS and collisions is None
-    return functools.partial(
-        _solve_one, robot, target, seed, options, collisions, rng_of(body), annotate=annotate
-    ), inline
+    return plan.call(robot, target, seed, annotate), plan.inline
 
 
 @router.post(

@@ -29,12 +29,12 @@ from starlette.websockets import WebSocketDisconnect, WebSocketState
 from app.api.deps import load_robot
 from app.api.errors import json_bytes, kinematics_problem, problem, problem_body
 from app.api.fk import fk_answer
-from app.api.ik import prepare_ik
+from app.api.ik import IKPlan, plan_ik, prepare_ik
 from app.api.ik_request import check_budget
+from app.api.ik_schemas import IKRequest
 from app.api.jacobian import jacobian_answer
 from app.api.offload import offload
 from app.api.responses import dumps
-from app.api.schemas import Schema
 from app.api.stream_schemas import (
     Message,
     StreamMessageError,
@@ -44,6 +44,7 @@ from app.api.stream_schemas import (
     route_path,
 )
 from app.kinematics.errors import Cancelled, KinematicsError
+from app.kinematics.ik.problem import target_placement
 from app.kinematics.models import RobotModel
 
 log = logging.getLogger("denavit")
@@ -57,6 +58,9 @@ MESSAGE_TOO_BIG = 1009
 ROBOT_ERROR_BASE = 4000
 #: Seconds a socket that must authenticate by its first message may take to send it.
 AUTH_TIMEOUT_S = 10.0
+#: The options of binary ik frames before any JSON ik message: an ik message that sets none
+#: (the HTTP defaults; its placeholder target is never read).
+DEFAULT_IK = IKRequest.model_validate({"target": {"position": [0.0, 0.0, 0.0]}})
 AUTH_HELP = (
     "authorization: this stream needs 'Authorization: Bearer <token>' on the upgrade "
     'request or {"token": "<token>"} as its first message'
@@ -116,8 +120,8 @@ class _Session:
         self.path = f"/robots/{robot_id}/stream"
         self.robot: RobotModel | None = None
         self.last_q: np.ndarray | None = None
-        self.ik_body: Schema | None = None  # the last JSON ik message
-        self.ik_options: dict[str, Any] | None = None  # its options, once a binary frame came
+        self.ik_body: IKRequest = DEFAULT_IK  # the last JSON ik message: binary frames' options
+        self.ik_plan: IKPlan | None = None  # its plan, once a binary frame needed it
         self.cancel = threading.Event()  # set when the socket ends: stops pooled IK
 
     # -------------------------------------------------------------------- set-up
@@ -224,7 +228,7 @@ class _Session:
                 message = parse_text(frame["text"], self.robot_id, self.path)
             else:
                 raw = frame.get("bytes") or b""
-                message = parse_binary(raw, self.robot_id, self.path, self._binary_ik_options)
+                message = parse_binary(raw, self.robot_id, self.path)
             if message.token is not None:
                 return self._auth_answer(message)
             out = await self._compute(message)
@@ -248,34 +252,36 @@ class _Session:
     async def _compute(self, message: Message) -> dict[str, Any]:
         """The HTTP answer body of a validated message (the same functions as the routes)."""
         robot, body = self.robot, message.body
-        assert robot is not None and body is not None
-        if message.op == "fk":
+        assert robot is not None
+        if message.pose is not None:  # a binary ik frame: the last JSON ik message's options
+            plan = self._binary_plan()
+            p, o = message.pose[:3], message.pose[3:]
+            target = target_placement(p, o, None, plan.options.mode, "target")
+            solve, inline = plan.call(robot, target, self.last_q, annotate=False), plan.inline
+        elif message.op == "fk":
             return fk_answer(robot, body)  # type: ignore[arg-type]
-        if message.op == "jacobian":
+        elif message.op == "jacobian":
             return jacobian_answer(robot, body)  # type: ignore[arg-type]
-        check_budget(self.ws, body.timeout_ms)  # type: ignore[attr-defined]
-        solve, inline = prepare_ik(
-            self.ws,
-            robot,
-            body,  # type: ignore[arg-type]
-            self.last_q,
-            annotate=not message.binary,  # binary answers carry no branch labels
-        )
+        else:
+            check_budget(self.ws, body.timeout_ms)  # type: ignore[union-attr]
+            solve, inline = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
+            self.ik_body, self.ik_plan = body, None  # type: ignore[assignment]
         out = solve() if inline else await offload(solve, cancel=self.cancel)
         if out["success"]:
             self.last_q = np.array(out["q"])
-        if not message.binary:  # binary ik frames reuse these options (dumped when needed)
-            self.ik_body, self.ik_options = body, None
         return out
 
-    def _binary_ik_options(self) -> dict[str, Any]:
-        """The options of binary IK frames: the last JSON ik message's, target and seed left
-        out (HTTP defaults before one)."""
-        if self.ik_options is None:
-            body = self.ik_body
-            dump = {} if body is None else body.model_dump(exclude_unset=True)
-            self.ik_options = {k: v for k, v in dump.items() if k not in ("target", "seed")}
-        return self.ik_options
+    def _binary_plan(self) -> IKPlan:
+        """The plan of binary ik frames: the last JSON ik message's options (the HTTP
+        defaults before one), made once; with collision checks it is made anew each frame,
+        so a changed scene is seen as by a JSON message."""
+        plan = self.ik_plan
+        if plan is None:
+            check_budget(self.ws, self.ik_body.timeout_ms)
+            plan = plan_ik(self.ws, self.robot, self.ik_body)  # type: ignore[arg-type]
+            if plan.collisions is None:
+                self.ik_plan = plan
+        return plan
 
 
 def _size(message: dict[str, Any]) -> int:

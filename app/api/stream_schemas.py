@@ -13,7 +13,6 @@ Binary frames are little-endian float64 arrays: ``[op code, id, payload...]``
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -49,13 +48,17 @@ class StreamMessageError(Exception):
 @dataclass
 class Message:
     """A parsed request: the client's id, the op, its validated body (``None`` for a token
-    message, whose ``token`` is set), and whether it came as a binary frame."""
+    message, whose ``token`` is set, and for a binary ik frame, whose ``pose`` is), and
+    whether it came as a binary frame."""
 
     msg_id: Any
     op: str
     body: Schema | None
     binary: bool = False
     token: str | None = None
+    #: A binary ik frame's target, [x, y, z, qx, qy, qz, qw] (its body is ``None``: the
+    #: options are the socket's, see :meth:`app.api.stream._Session._binary_plan`).
+    pose: list[float] | None = None
 
 
 def route_path(robot_id: str, op: str) -> str:
@@ -119,14 +122,13 @@ def _malformed(detail: str, instance: str) -> dict[str, Any]:
     return problem_body(400, detail, kind="malformed-json", field="message", instance=instance)
 
 
-def parse_binary(
-    data: bytes, robot_id: str, stream_path: str, ik_options: Callable[[], dict[str, Any]]
-) -> Message:
+def parse_binary(data: bytes, robot_id: str, stream_path: str) -> Message:
     """A binary frame → :class:`Message` (or :class:`StreamMessageError`).
 
     Layout, little-endian float64: ``[op code, id, payload]``; payload ``q`` (one value per
-    joint) for fk and jacobian, the target ``[x, y, z, qx, qy, qz, qw]`` for ik (its other
-    options: ``ik_options()``, those of the socket's last valid JSON ik message)."""
+    joint) for fk and jacobian, the target ``[x, y, z, qx, qy, qz, qw]`` for ik (checked by
+    the core when solved; its other options are those of the socket's last valid JSON ik
+    message)."""
     if len(data) % 8 or len(data) < 16:
         raise _invalid(
             "message",
@@ -149,11 +151,8 @@ def parse_binary(
                 msg_id,
                 op,
             )
-        target = {"position": payload[:3], "orientation": payload[3:]}
-        body = {**ik_options(), "target": target}
-    else:
-        body = {"q": payload}
-    return Message(msg_id, op, validate(op, body, robot_id, msg_id), binary=True)
+        return Message(msg_id, op, None, binary=True, pose=payload)
+    return Message(msg_id, op, validate(op, {"q": payload}, robot_id, msg_id), binary=True)
 
 
 def binary_answer(op: str, msg_id: float, out: dict[str, Any]) -> bytes:
