@@ -14,7 +14,9 @@ transports alternating target by target so load hits them alike:
 - **stream, binary, 8 in flight**: the same frames pipelined (the time between answers;
   "median" and "p99" are then of that interval, not of a round trip).
 
-Per transport: round trips per second (1 / mean round trip), median and p99 round trip.
+Two runs: the server and the client free to migrate between cores, then each pinned to a
+core of its own (a servo-rate deployment pins its server: the wake-ups that cross cores and
+a process moved mid-request are most of the p99). Per transport: round trips per second (1 / mean round trip), median and p99 round trip.
 Targets: the stream ≥ 5× HTTP's round trips per second, p99 < 1 ms for the UR5 step.
 """
 
@@ -117,13 +119,36 @@ def pose_target(pose: dict) -> dict:
     return {"position": pose["position"], "orientation": pose["orientation"]}
 
 
+def _pin(pids: list[int], cpu: int) -> None:
+    """Every thread of ``pids`` onto ``cpu``."""
+    for pid in pids:
+        for tid in os.listdir(f"/proc/{pid}/task"):
+            os.sched_setaffinity(int(tid), {cpu})
+
+
 def main() -> None:
+    cpus = sorted(os.sched_getaffinity(0))
+    for pinned in (False, True) if len(cpus) >= 2 else (False,):
+        _table(pinned, cpus)
+
+
+def _table(pinned: bool, cpus: list[int]) -> None:
+    """One run: the server and this client free to migrate between cores, or each pinned to
+    a core of its own (as a servo-rate deployment would: ``docker run --cpuset-cpus``)."""
     results = {}
+    mine = os.sched_getaffinity(0)
     with serve(workers="1") as server:
-        for robot_id, q in ROBOTS.items():
-            results[robot_id] = _run(server.url, robot_id, q)
+        if pinned:
+            _pin(server.pids(), cpus[0])
+            os.sched_setaffinity(0, {cpus[1]})  # threads made from now on inherit it
+        try:
+            for robot_id, q in ROBOTS.items():
+                results[robot_id] = _run(server.url, robot_id, q)
+        finally:
+            os.sched_setaffinity(0, mine)
+    where = "server and client each pinned to a core" if pinned else "not pinned"
     print(f"\nIK round trips, one connection, sequential ({N} jog steps of {STEP_M * 1e3:g} mm, "
-          "each seeded by the previous solution)\n")  # fmt: skip
+          f"each seeded by the previous solution; {where})\n")  # fmt: skip
     print("| robot | transport | round trips/s | × HTTP | median (ms) | p99 (ms) |")
     print("|---|---|---:|---:|---:|---:|")
     for robot_id, times in results.items():
