@@ -9,4 +9,4 @@ worker of the same ``SOLVER_VERSION``, on the same platform.
 from __future__ import annotations
 
 #: Name and version of the solver (changes whenever answers may change).
-SOLVER_VERSION = "denavit-ik 1.0"
+SOLVER_VERSION = "denavit-ik 1.1"
