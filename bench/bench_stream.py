@@ -16,7 +16,8 @@ transports alternating target by target so load hits them alike:
 
 Two runs: the server and the client free to migrate between cores, then each pinned to a
 core of its own (a servo-rate deployment pins its server: the wake-ups that cross cores and
-a process moved mid-request are most of the p99). Per transport: round trips per second (1 / mean round trip), median and p99 round trip.
+a process moved mid-request are most of the p99). Per transport: round trips per second
+(1 / mean round trip), median and p99 round trip.
 Targets: the stream ≥ 5× HTTP's round trips per second, p99 < 1 ms for the UR5 step.
 """
 
