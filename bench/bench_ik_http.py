@@ -38,8 +38,13 @@ ROBOTS = {
 }
 
 
+def pose_target(pose: dict) -> dict:
+    """The IK target of an FK answer's pose (position and quaternion)."""
+    return {"position": pose["position"], "orientation": pose["orientation"]}
+
+
 def _ik_body(pose: dict) -> bytes:
-    return orjson.dumps({"target": {k: pose[k] for k in ("position", "orientation")}})
+    return orjson.dumps({"target": pose_target(pose)})
 
 
 def _trimmed_ms(values: list[float]) -> float:

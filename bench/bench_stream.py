@@ -33,14 +33,9 @@ import orjson
 from websockets.sync.client import connect
 
 from bench._http import serve
+from bench.bench_ik_http import JSON, ROBOTS, N, pose_target
 
-N = int(os.environ.get("DENAVIT_BENCH_N", "2000"))
-JSON = {"content-type": "application/json"}
 STEP_M = 2e-4
-ROBOTS = {
-    "ur5": [0.3, -1.1, 1.4, -0.6, 1.2, 0.4],
-    "panda": [0.2, -0.5, 0.1, -2.0, 0.3, 1.6, 0.6, 0.02],
-}
 #: Binary frames with several in flight (the seeding is the server's, so a client may send
 #: the next targets before the answers come back; HTTP has no such mode).
 WINDOW = 8
@@ -114,10 +109,6 @@ def _pipelined(ws, targets: list[tuple[list[float], list[float]]]) -> list[float
         out.append(now - last)
         last = now
     return out
-
-
-def pose_target(pose: dict) -> dict:
-    return {"position": pose["position"], "orientation": pose["orientation"]}
 
 
 def _pin(pids: list[int], cpu: int) -> None:

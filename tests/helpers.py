@@ -6,6 +6,7 @@
   loopback port, stopped by its PID afterwards; :func:`make_app_with_a_bug` is a test-only
   application factory for it (``uvicorn --factory``).
 - :func:`parse_metrics`: Prometheus text exposition → samples.
+- :func:`fk_target`: the wire IK target of a frame at a configuration (FK in the test).
 - :func:`write_routes`: the routes guarded by the write token.
 
 Threads that talk to a live server each open their own ``httpx.Client``.
@@ -27,11 +28,14 @@ from pathlib import Path
 from urllib.parse import urlsplit
 
 import httpx
+import numpy as np
 import orjson
 from fastapi import FastAPI
 from fastapi.routing import APIRoute, iter_route_contexts
 
 from app.api.security import require_token
+from app.kinematics.fk import forward_kinematics
+from app.kinematics.rotations import matrix_to_quaternion
 from app.main import create_app
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -216,3 +220,9 @@ def send_and_hang_up(url: str, path: str, body: dict) -> None:
     with socket.create_connection((parts.hostname, parts.port), timeout=10) as s:
         s.sendall(head + payload)
         time.sleep(0.2)  # let the server read it and hand it to the pool
+
+
+def fk_target(registry, q, robot_id: str, frame: str) -> dict:
+    """The wire target of ``frame`` at configuration ``q`` (position and quaternion)."""
+    T = forward_kinematics(registry.get(robot_id), np.array(q), [frame])[frame]
+    return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}

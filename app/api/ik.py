@@ -171,8 +171,8 @@ async def solve_ik(
     """
     check_budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
-    solve, inline = prepare_ik(request, robot, body)
-    out = solve() if inline else await offload_cancellable(request, solve)
+    plan, solve = prepare_ik(request, robot, body)
+    out = solve() if plan.inline else await offload_cancellable(request, solve)
     return ORJSONResponse(out)
 
 
@@ -192,7 +192,9 @@ class IKPlan:
         self, robot: RobotModel, target: pin.SE3, seed: np.ndarray | None, annotate: bool = True
     ) -> Callable[..., dict]:
         """The query as a call giving its answer body; it takes an optional ``cancel``
-        event (:func:`offload_cancellable`)."""
+        event (:func:`offload_cancellable`). Without ``annotate`` (the stream's binary
+        answers, which carry no labels) the solutions' ``branch`` and ``manipulability`` are
+        computed only where the ranking needs them: the same ``q``."""
         return functools.partial(
             _solve_one,
             robot,
@@ -218,21 +220,17 @@ def prepare_ik(
     robot: RobotModel,
     body: IKRequest,
     last_q: np.ndarray | None = None,
-    annotate: bool = True,
-) -> tuple[Callable[..., dict], bool]:
-    """One IK query (HTTP or the stream) as a call giving its answer body, and whether it may
-    run on the event loop (:class:`IKPlan`).
+) -> tuple[IKPlan, Callable[..., dict]]:
+    """One IK query (HTTP or the stream): its :class:`IKPlan` (whether it may run on the
+    event loop; the stream keeps it for binary frames) and a call giving its answer body.
 
     ``last_q`` seeds the query when the body gives no ``seed`` (the stream's last solution);
-    without either, the solver's default (the middle of the joint limits). Without
-    ``annotate`` (the stream's binary answers, which carry no labels) the solutions'
-    ``branch`` and ``manipulability`` are computed only where the ranking needs them: the
-    same ``q``.
+    without either, the solver's default (the middle of the joint limits).
     """
     plan = plan_ik(conn, robot, body)
     target = target_of(body.target, body.mode)
     seed = last_q if body.seed is None else group_seed(robot, group(robot, body.group), body.seed)
-    return plan.call(robot, target, seed, annotate), plan.inline
+    return plan, plan.call(robot, target, seed)
 
 
 @router.post(

@@ -121,7 +121,7 @@ class _Session:
         self.robot: RobotModel | None = None
         self.last_q: np.ndarray | None = None
         self.ik_body: IKRequest = DEFAULT_IK  # the last JSON ik message: binary frames' options
-        self.ik_plan: IKPlan | None = None  # its plan, once a binary frame needed it
+        self.ik_plan: IKPlan | None = None  # its plan (None with collision checks)
         self.cancel = threading.Event()  # set when the socket ends: stops pooled IK
 
     # -------------------------------------------------------------------- set-up
@@ -264,17 +264,18 @@ class _Session:
             return jacobian_answer(robot, body)  # type: ignore[arg-type]
         else:
             check_budget(self.ws, body.timeout_ms)  # type: ignore[union-attr]
-            solve, inline = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
-            self.ik_body, self.ik_plan = body, None  # type: ignore[assignment]
+            plan, solve = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
+            inline, self.ik_body = plan.inline, body  # type: ignore[assignment]
+            self.ik_plan = plan if plan.collisions is None else None
         out = solve() if inline else await offload(solve, cancel=self.cancel)
         if out["success"]:
             self.last_q = np.array(out["q"])
         return out
 
     def _binary_plan(self) -> IKPlan:
-        """The plan of binary ik frames: the last JSON ik message's options (the HTTP
-        defaults before one), made once; with collision checks it is made anew each frame,
-        so a changed scene is seen as by a JSON message."""
+        """The plan of binary ik frames: the last JSON ik message's (the HTTP defaults',
+        made once, before one); with collision checks it is made anew each frame, so a
+        changed scene is seen as by a JSON message."""
         plan = self.ik_plan
         if plan is None:
             check_budget(self.ws, self.ik_body.timeout_ms)

@@ -10,7 +10,7 @@ import pytest
 from app.api import ik as ik_api
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.rotations import matrix_to_quaternion
-from tests.helpers import problem
+from tests.helpers import fk_target, problem
 
 Q_UR5 = [0.3, -1.0, 1.2, 0.2, 0.5, 0.1]
 GOOD_TARGET = {"position": [0.3, 0.2, 0.4], "orientation": [0.0, 0.0, 0.0, 1.0]}
@@ -18,12 +18,6 @@ GOOD_TARGET = {"position": [0.3, 0.2, 0.4], "orientation": [0.0, 0.0, 0.0, 1.0]}
 
 def ur5_target(registry, q=Q_UR5) -> dict:
     return fk_target(registry, q, "ur5", "tool0")
-
-
-def fk_target(registry, q, robot_id: str, frame: str) -> dict:
-    """The wire target of ``frame`` at configuration ``q`` (position and quaternion)."""
-    T = forward_kinematics(registry.get(robot_id), np.array(q), [frame])[frame]
-    return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}
 
 
 def check_pose(registry, q, target, frame="tool0", robot_id="ur5", tol=1e-5) -> None:

@@ -19,21 +19,14 @@ from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 from websockets.sync.client import connect
 
-from app.kinematics.fk import forward_kinematics
-from app.kinematics.rotations import matrix_to_quaternion
 from app.main import create_app
 from app.settings import Settings
-from tests.helpers import serve
+from tests.helpers import fk_target, serve
 
 Q_UR5 = [0.3, -1.1, 1.4, -0.6, 1.2, 0.4]
 Q_PANDA = [0.2, -0.5, 0.1, -2.0, 0.3, 1.6, 0.6, 0.02]
 #: IK whose answer does not depend on the machine's speed (iteration cap, generous budget).
 EXACT_IK = {"max_iterations": 2000, "timeout_ms": 1000.0, "random_seed": 7}
-
-
-def target_of(registry, robot_id: str, q: list[float], frame: str) -> dict:
-    T = forward_kinematics(registry.get(robot_id), np.array(q), [frame])[frame]
-    return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}
 
 
 def send(ws, message: dict) -> None:
@@ -62,7 +55,7 @@ def _client(url: str, robot_id: str, k: int, registry, results: dict) -> None:
     msgs = [("fk", {"q": q0}), ("jacobian", {"q": q0})]
     for _ in range(6):  # IK near q0: the first from the default seed, then chained
         q = (np.array(q0) + rng.uniform(-0.15, 0.15, len(q0))).tolist()
-        msgs.append(("ik", {"target": target_of(registry, robot_id, q, frame), **EXACT_IK}))
+        msgs.append(("ik", {"target": fk_target(registry, q, robot_id, frame), **EXACT_IK}))
         msgs.append(("fk", {"q": q}))
     ws_url = url.replace("http://", "ws://") + f"/robots/{robot_id}/stream"
     with connect(ws_url, proxy=None, open_timeout=60) as ws, httpx.Client(timeout=60) as http:
@@ -110,7 +103,7 @@ def test_eight_concurrent_sockets_answer_as_http_in_order(tmp_path, registry) ->
 def test_ik_without_seed_starts_from_the_last_solution(client, registry) -> None:
     """UR5: a branch other than the default one, given as the seed once, keeps being the
     answer for the same target when later messages give no seed (HTTP: the default)."""
-    target = target_of(registry, "ur5", Q_UR5, "tool0")
+    target = fk_target(registry, Q_UR5, "ur5", "tool0")
     default = client.post("/robots/ur5/ik", json={"target": target}).json()["q"]
     every = client.post("/robots/ur5/ik", json={"target": target, "num_solutions": 8}).json()
     other = next(
@@ -329,7 +322,7 @@ def test_plain_http_to_the_stream_is_told_to_upgrade(client) -> None:
 
 def test_collision_aware_ik_runs_as_over_http(client, registry) -> None:
     """Obstacles (in the work pool), then a binary frame reusing those options."""
-    target = target_of(registry, "ur5", Q_UR5, "tool0")
+    target = fk_target(registry, Q_UR5, "ur5", "tool0")
     ball = {"name": "ball", "shape": "sphere", "radius": 0.05, "pose": {"position": [2, 2, 2]}}
     body = {"target": target, "avoid_collisions": True, "obstacles": [ball], "seed": Q_UR5,
             **EXACT_IK}  # fmt: skip
