@@ -216,3 +216,30 @@ def send_and_hang_up(url: str, path: str, body: dict) -> None:
     with socket.create_connection((parts.hostname, parts.port), timeout=10) as s:
         s.sendall(head + payload)
         time.sleep(0.2)  # let the server read it and hand it to the pool
+
+
+def proc_stat(pid: int) -> tuple[str, int] | None:
+    """State letter and parent pid of ``pid`` (``None`` if it does not exist)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            text = f.read().decode("ascii", "replace")
+    except OSError:
+        return None
+    fields = text[text.rfind(")") + 2 :].split()
+    return fields[0], int(fields[1])
+
+
+def descendants(pid: int) -> set[int]:
+    """Every process below ``pid`` in the process tree (children, their children...)."""
+    children: dict[int, list[int]] = {}
+    for name in os.listdir("/proc"):
+        if name.isdigit() and (stat := proc_stat(int(name))) is not None:
+            children.setdefault(stat[1], []).append(int(name))
+    out: set[int] = set()
+    todo = [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in out:
+                out.add(child)
+                todo.append(child)
+    return out
