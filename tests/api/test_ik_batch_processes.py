@@ -9,7 +9,6 @@ iteration caps with time limits generous enough never to bind.
 from __future__ import annotations
 
 import os
-import re
 import signal
 import threading
 from pathlib import Path
@@ -28,7 +27,7 @@ from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import parse_obstacles
 from app.main import create_app
 from app.settings import Settings
-from tests.helpers import descendants, problem, send_and_hang_up, serve
+from tests.helpers import descendants, parse_metrics, problem, send_and_hang_up, serve
 
 RANDOM_SEED = 1234
 CAPPED = {"timeout_ms": 200.0, "max_iterations": 300}
@@ -198,8 +197,8 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
 
 
 def _ik_failures(client: httpx.Client) -> float:
-    text = client.get("/metrics").text
-    return float(re.search(r'denavit_ik_requests_total\{result="failure"\} (\S+)', text)[1])
+    metrics = parse_metrics(client.get("/metrics").text)
+    return metrics['denavit_ik_requests_total{result="failure"}']
 
 
 def test_a_hung_up_batch_frees_the_pool(tmp_path: Path, registry) -> None:
