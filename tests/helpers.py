@@ -226,3 +226,30 @@ def fk_target(registry, q, robot_id: str, frame: str) -> dict:
     """The wire target of ``frame`` at configuration ``q`` (position and quaternion)."""
     T = forward_kinematics(registry.get(robot_id), np.array(q), [frame])[frame]
     return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}
+
+
+def proc_stat(pid: int) -> tuple[str, int] | None:
+    """State letter and parent pid of ``pid`` (``None`` if it does not exist)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            text = f.read().decode("ascii", "replace")
+    except OSError:
+        return None
+    fields = text[text.rfind(")") + 2 :].split()
+    return fields[0], int(fields[1])
+
+
+def descendants(pid: int) -> set[int]:
+    """Every process below ``pid`` in the process tree (children, their children...)."""
+    children: dict[int, list[int]] = {}
+    for name in os.listdir("/proc"):
+        if name.isdigit() and (stat := proc_stat(int(name))) is not None:
+            children.setdefault(stat[1], []).append(int(name))
+    out: set[int] = set()
+    todo = [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in out:
+                out.add(child)
+                todo.append(child)
+    return out

@@ -13,7 +13,7 @@ import time
 import httpx
 import pytest
 
-from tests.helpers import Server, serve
+from tests.helpers import Server, descendants, proc_stat, serve
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="walks /proc for the process tree"
@@ -31,43 +31,16 @@ LONG_BUILD = {
 GONE_WITHIN_S = 30.0
 
 
-def _stat(pid: int) -> tuple[str, int] | None:
-    """State letter and parent pid of ``pid`` (``None`` if it does not exist)."""
-    try:
-        with open(f"/proc/{pid}/stat", "rb") as f:
-            text = f.read().decode("ascii", "replace")
-    except OSError:
-        return None
-    fields = text[text.rfind(")") + 2 :].split()
-    return fields[0], int(fields[1])
-
-
 def parent(pid: int) -> int:
     """The parent pid of ``pid`` (0 if it does not exist)."""
-    stat = _stat(pid)
+    stat = proc_stat(pid)
     return stat[1] if stat else 0
 
 
 def running(pid: int) -> bool:
     """Whether ``pid`` is in the process table and not a zombie (or dead)."""
-    stat = _stat(pid)
+    stat = proc_stat(pid)
     return stat is not None and stat[0] not in {"Z", "X"}
-
-
-def descendants(pid: int) -> set[int]:
-    """Every process below ``pid`` in the process tree (children, their children...)."""
-    children: dict[int, list[int]] = {}
-    for name in os.listdir("/proc"):
-        if name.isdigit() and (stat := _stat(int(name))) is not None:
-            children.setdefault(stat[1], []).append(int(name))
-    out: set[int] = set()
-    todo = [pid]
-    while todo:
-        for child in children.get(todo.pop(), []):
-            if child not in out:
-                out.add(child)
-                todo.append(child)
-    return out
 
 
 def cmdline(pid: int) -> str:

@@ -9,7 +9,6 @@ iteration caps with time limits generous enough never to bind.
 from __future__ import annotations
 
 import os
-import re
 import signal
 import threading
 from pathlib import Path
@@ -28,7 +27,7 @@ from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import parse_obstacles
 from app.main import create_app
 from app.settings import Settings
-from tests.helpers import problem, send_and_hang_up, serve
+from tests.helpers import descendants, parse_metrics, problem, send_and_hang_up, serve
 
 RANDOM_SEED = 1234
 CAPPED = {"timeout_ms": 200.0, "max_iterations": 300}
@@ -198,17 +197,8 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
 
 
 def _ik_failures(client: httpx.Client) -> float:
-    text = client.get("/metrics").text
-    return float(re.search(r'denavit_ik_requests_total\{result="failure"\} (\S+)', text)[1])
-
-
-def _descendants(pid: int) -> list[int]:
-    """Every process below ``pid`` (Linux /proc)."""
-    out = []
-    for task in Path(f"/proc/{pid}/task").iterdir():
-        for child in (task / "children").read_text().split():
-            out += [int(child), *_descendants(int(child))]
-    return out
+    metrics = parse_metrics(client.get("/metrics").text)
+    return metrics['denavit_ik_requests_total{result="failure"}']
 
 
 def test_a_hung_up_batch_frees_the_pool(tmp_path: Path, registry) -> None:
@@ -230,7 +220,7 @@ def test_a_hung_up_batch_frees_the_pool(tmp_path: Path, registry) -> None:
             assert r.status_code == 200 and r.json()["solved"] == 32, r.text
             assert _ik_failures(c) - before < 32
             # the batches ran in the pool: the forkserver and its 2 workers below the server
-            assert len(_descendants(server.proc.pid)) >= 3
+            assert len(descendants(server.proc.pid)) >= 3
 
 
 def test_a_replaced_robot_is_rebuilt_in_the_workers(registry) -> None:

@@ -199,10 +199,7 @@ class Search:
             er = er_full = math.hypot(a, b, c)
             energy = x * x + y * y + z * z + a * a + b * b + c * c
         else:
-            e = np.concatenate(
-                (T.translation - target.translation, pin.log3(T.rotation @ target.rotation.T))
-            )
-            ep_full, er_full = math.hypot(*e[:3].tolist()), math.hypot(*e[3:].tolist())
+            ep_full, er_full, e = pose_errors(T, target)
             ep, er = self._checked(e)
             energy = self._energy(e)
         if energy < self.best_energy:
