@@ -15,13 +15,12 @@ from starlette.requests import HTTPConnection
 from app.api.deps import scene_store
 from app.api.ik_schemas import IKTaskIn, Target
 from app.api.scenes import resolve_obstacles
-from app.kinematics.collision import collision_filter
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.problem import IKOptions, frame_name, target_placement
 from app.kinematics.ik.ranking import clearance_function
+from app.kinematics.ik_batch import Collisions, collision_accept
 from app.kinematics.models import RobotModel
-from app.kinematics.obstacles import Obstacle
 
 
 def target_of(target: Target, mode: str, field: str = "target") -> pin.SE3:
@@ -54,11 +53,6 @@ def check_request_budget(
         )
 
 
-#: What collision-aware IK checks a solution against: obstacles (root frame), clearance (m),
-#: and the collision geometry (``mesh`` or ``convex``).
-Collisions = tuple[tuple[Obstacle, ...], float, str]
-
-
 def collisions_of(request: HTTPConnection, body: IKTaskIn) -> Collisions | None:
     """(obstacles, margin, geometry) for collision-aware IK, or None (validated here)."""
     if not body.avoid_collisions:
@@ -72,10 +66,7 @@ def collisions_of(request: HTTPConnection, body: IKTaskIn) -> Collisions | None:
 
 def accept_of(robot: RobotModel, collisions: Collisions | None) -> Any:
     """The collision-free predicate of collision-aware IK (builds the collision model)."""
-    if collisions is None:
-        return None
-    obstacles, margin, geometry = collisions
-    return collision_filter(robot, obstacles, margin=margin, mode=geometry)
+    return collision_accept(robot, collisions)
 
 
 def clearance_of(robot: RobotModel, collisions: Collisions | None) -> Any:
