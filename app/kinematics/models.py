@@ -69,9 +69,9 @@ def check_bounded(values: Any, field: str, bound: float, unit: str) -> None:
         # per-call overhead; a comparison with NaN is False, so NaN goes on to the report.
         if all(-bound <= v <= bound for v in arr.tolist()):
             return
-    elif (np.abs(arr) <= bound).all():
-        return
     ok = np.abs(arr) <= bound  # False for NaN too
+    if ok.all():
+        return
     where = tuple(int(i) for i in np.argwhere(~ok)[0])
     value = float(arr[where])
     path = ".".join([field, *map(str, where)])
