@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install run test lint bench bench-env lock-bench openapi lock image container-check compose-check clean
+.PHONY: install run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean
 
 install: $(STAMP)
 
@@ -54,12 +54,31 @@ run: install
 	DENAVIT_HOST=$(HOST) DENAVIT_PORT=$(PORT) $(BIN)/python -m app
 
 lint: install
-	$(BIN)/ruff check app dh2urdf robots tests bench deploy
-	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy
+	$(BIN)/ruff check app dh2urdf robots tests bench deploy scripts
+	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts
 	$(BIN)/hadolint Dockerfile
 
-test: install lint
+test: install lint browser
 	$(BIN)/python -m pytest -n 2 tests
+
+# The browser tests (tests/browser) drive Debian's chromium through Playwright; Playwright's
+# own browser download does not work here. Installed when missing (root, apt), else the
+# target fails and says how: the browser tests never skip.
+CHROMIUM ?= /usr/bin/chromium
+browser:
+	@test -x $(CHROMIUM) || { \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends chromium \
+	      || { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y \
+	           --no-install-recommends chromium; }; \
+	  else echo "no $(CHROMIUM): install Debian's chromium (sudo apt-get install chromium)"; \
+	    exit 1; fi; }
+
+# Refresh the browser libraries vendored in app/static/vendor (three.js, urdf-loader,
+# Swagger UI, ReDoc) from the npm registry, at the versions pinned in scripts/vendor_web.py.
+# Only for changing them: `make run` serves the committed files and needs no Node.
+viewer-vendor: install
+	$(BIN)/python scripts/vendor_web.py
 
 # The bench-only venv: the Robotics Toolbox (ik_LM, side by side in bench_ik), which needs
 # another NumPy than the service: never in .venv or its locks; `make test`/CI do not need it.
