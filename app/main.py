@@ -25,7 +25,7 @@ from fastapi import FastAPI
 from starlette.middleware.cors import CORSMiddleware
 
 from app import api, openapi
-from app.api import errors, metrics
+from app.api import errors, metrics, viewer
 from app.body_limit import BodyLimitMiddleware
 from app.documents.archive import ArchiveLimits
 from app.documents.urdf import UrdfLimits
@@ -121,6 +121,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     for router in api.ROUTERS:
         app.include_router(router)
     app.include_router(metrics.router)
+    viewer.install(app)  # GET /viewer and /static (not in the OpenAPI document)
     openapi.install(app)  # error responses documented as sent (problem+json)
     # add_middleware puts each new one outside the previous ones.
     app.add_middleware(MethodsMiddleware)

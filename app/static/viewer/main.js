@@ -1,0 +1,96 @@
+// The viewer: picks a robot, poses it, and hands every change to the panels. Each panel is
+// a class with optional `build(detail)` (a robot was loaded) and `update(source)` (the
+// configuration changed; source: 'slider', 'ik', 'path', 'neutral', 'load', ...).
+// `window.denavit` exposes the state to the browser tests (tests/browser).
+import { api, setupToken } from './api.js';
+import { Stage } from './stage.js';
+import { RobotView } from './robot.js';
+import { Latest } from './latest.js';
+import { JointsPanel } from './joints.js';
+import { IkPanel } from './ik.js';
+import { EllipsoidPanel } from './ellipsoid.js';
+
+class Viewer {
+  constructor() {
+    this.api = api;
+    this.stage = new Stage(document.getElementById('stage'));
+    this.status = document.getElementById('status');
+    this.robot = null;
+    this.detail = null;
+    this.q = [];
+    this.listeners = {};
+    this.panels = [];
+    this.ready = false;
+    this.loads = 0;
+  }
+
+  on(event, fn) { (this.listeners[event] ||= []).push(fn); }
+
+  emit(event, payload) { (this.listeners[event] || []).forEach((fn) => fn(payload)); }
+
+  path(suffix = '') { return `/robots/${encodeURIComponent(this.detail.id)}${suffix}`; }
+
+  report(err) {
+    this.status.textContent = err ? String(err.message || err) : '';
+    this.status.classList.toggle('error', Boolean(err));
+  }
+
+  async start() {
+    setupToken();
+    const picker = document.getElementById('robot-picker');
+    const { robots } = await api.get('/robots');
+    picker.replaceChildren(...robots.map((r) => new Option(`${r.id} (${r.source})`, r.id)));
+    const wanted = document.body.dataset.robotId || robots[0]?.id;
+    picker.addEventListener('change', () => this.load(picker.value).catch((e) => this.report(e)));
+    picker.value = wanted;
+    await this.load(wanted);
+  }
+
+  async load(robotId) {
+    this.ready = false;
+    this.report(null);
+    const base = `/robots/${encodeURIComponent(robotId)}`;
+    const [detail, urdf] = await Promise.all([api.get(base), api.get(`${base}/urdf`)]);
+    const view = await RobotView.load(detail, urdf);
+    if (this.robot) this.robot.dispose();
+    this.robot = view;
+    this.detail = detail;
+    this.stage.world.add(view.root);
+    history.replaceState(null, '', `/viewer/${encodeURIComponent(robotId)}`);
+    document.title = `Denavit viewer: ${robotId}`;
+    this.panels.forEach((p) => p.build?.(detail));
+    this.setQ(detail.neutral.slice(), 'load');
+    this.stage.frame(view.root);
+    if (view.stats.failed) this.report(`${view.stats.failed} mesh(es) not loaded`);
+    this.loads += 1;
+    this.ready = true;
+  }
+
+  setQ(q, source) {
+    this.q = q;
+    this.robot.setConfig(q);
+    this.stage.render();
+    this.panels.forEach((p) => p.update?.(source));
+  }
+}
+
+const viewer = new Viewer();
+const joints = new JointsPanel(viewer);
+const ik = new IkPanel(viewer);
+const ellipsoid = new EllipsoidPanel(viewer);
+viewer.panels.push(joints, ik, ellipsoid);
+
+// The tests' window on the viewer (read-only use; the page itself never reads it).
+window.denavit = {
+  viewer,
+  panels: { joints, ik, ellipsoid },
+  get ready() { return viewer.ready; },
+  idle: () => viewer.ready && Latest.pending === 0,
+  frames: () => viewer.stage.frames,
+  screenOf: (p) => viewer.stage.screenOf(p),
+};
+
+viewer.start().catch((err) => {
+  viewer.report(err);
+  console.error('viewer failed to start:', err);
+});
