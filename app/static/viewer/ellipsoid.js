@@ -60,7 +60,7 @@ export class EllipsoidPanel {
       this.mesh.visible = false; // fewer than 3 task rows: nothing to draw in 3-D
     }
     const c = answer.inverse_condition;
-    this.mesh.material.color.setHSL((1 / 3) * c, 0.85, 0.5);
+    this.mesh.material.color.setHSL((1 / 3) * c, 0.85, 0.5, THREE.SRGBColorSpace);
     this.readout.textContent =
       `${part}: σ = [${answer.singular_values.map((s) => s.toFixed(4)).join(', ')}], ` +
       `1/κ = ${c.toFixed(3)}, w = ${answer.yoshikawa.toExponential(3)}; ` +

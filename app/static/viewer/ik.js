@@ -127,16 +127,18 @@ export class IkPanel {
     this.lastBranches = answer;
   }
 
-  // For the tests: the page position of the gizmo's handle for `axis` ('X', 'Y', 'Z').
+  // For the tests: the page position of a point on the gizmo's arrow for `axis` ('X',
+  // 'Y', 'Z'), near its outer end, where no other handle overlaps it.
   handleScreenPoint(axis) {
     const picker = this.controls._gizmo.picker[this.controls.mode];
-    const handle = picker.children.find((c) => c.name === axis);
+    const i = 'XYZ'.indexOf(axis);
+    const tip = (h) => { h.geometry.computeBoundingBox(); return h.geometry.boundingBox.max.getComponent(i); };
+    // Two pickers per axis (the arrow's + and − halves): the + one.
+    const handle = picker.children.filter((c) => c.name === axis).sort((a, b) => tip(b) - tip(a))[0];
     this.controls.getHelper().updateMatrixWorld(true);
-    handle.geometry.computeBoundingBox();
-    const centre = handle.geometry.boundingBox.getCenter(new THREE.Vector3());
-    centre.applyMatrix4(handle.matrixWorld);
-    const v = centre.project(this.stage.camera);
-    const rect = this.stage.renderer.domElement.getBoundingClientRect();
-    return [rect.left + ((v.x + 1) / 2) * rect.width, rect.top + ((1 - v.y) / 2) * rect.height];
+    const point = new THREE.Vector3();
+    point.setComponent(i, 0.85 * handle.geometry.boundingBox.max.getComponent(i));
+    point.applyMatrix4(handle.matrixWorld);
+    return this.stage.screenOf(this.stage.world.worldToLocal(point).toArray());
   }
 }

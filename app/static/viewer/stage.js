@@ -1,6 +1,7 @@
 // The three.js stage: renderer, camera, orbit controls, lights, grid, and `world`, a group
-// in the robot's root frame (URDF: z up, metres). three.js is y up, so `world` is turned
-// -90° about x; everything placed in `world` uses the API's coordinates unchanged.
+// in the robot's root frame (URDF: z up, metres). The scene is z up like the robot (the
+// camera's up is +z), so everything placed in `world` uses the API's coordinates unchanged
+// and the gizmo's X, Y, Z handles are the robot's x, y, z.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
@@ -14,20 +15,24 @@ export class Stage {
 
     this.scene = new THREE.Scene();
     this.camera = new THREE.PerspectiveCamera(45, 1, 0.01, 100);
-    this.camera.position.set(1.6, 1.2, 1.6);
+    this.camera.up.set(0, 0, 1);
+    this.camera.position.set(1.6, 1.6, 1.2);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.target.set(0, 0.4, 0);
+    this.controls.target.set(0, 0, 0.4);
     this.controls.addEventListener('change', () => this.render());
 
-    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 2.0));
+    const sky = new THREE.HemisphereLight(0xffffff, 0x8090a0, 2.0);
+    sky.position.set(0, 0, 1);
+    this.scene.add(sky);
     const sun = new THREE.DirectionalLight(0xffffff, 1.5);
-    sun.position.set(3, 5, 2);
+    sun.position.set(3, 2, 5);
     this.scene.add(sun);
-    this.scene.add(new THREE.GridHelper(2, 20, 0x9aa4b0, 0xd0d6de));
+    const grid = new THREE.GridHelper(2, 20, 0x9aa4b0, 0xd0d6de);
+    grid.rotation.x = Math.PI / 2; // into the x-y plane
+    this.scene.add(grid);
 
     this.world = new THREE.Group();
     this.world.name = 'world';
-    this.world.rotation.x = -Math.PI / 2;
     this.scene.add(this.world);
     this.world.add(new THREE.AxesHelper(0.15));
 
@@ -65,7 +70,7 @@ export class Stage {
     const centre = box.getCenter(new THREE.Vector3());
     const size = Math.max(box.getSize(new THREE.Vector3()).length(), 0.3);
     this.controls.target.copy(centre);
-    this.camera.position.copy(centre).add(new THREE.Vector3(0.9, 0.6, 0.9).multiplyScalar(size));
+    this.camera.position.copy(centre).add(new THREE.Vector3(0.9, 0.9, 0.6).multiplyScalar(size));
     this.camera.near = size / 100;
     this.camera.far = size * 100;
     this.camera.updateProjectionMatrix();
