@@ -25,7 +25,7 @@ from fastapi import FastAPI
 from starlette.middleware.cors import CORSMiddleware
 
 from app import api, openapi
-from app.api import errors, metrics
+from app.api import docs_pages, errors, metrics
 from app.body_limit import BodyLimitMiddleware
 from app.documents.archive import ArchiveLimits
 from app.documents.urdf import UrdfLimits
@@ -95,7 +95,14 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
 def create_app(settings: Settings | None = None) -> FastAPI:
     """Build the application (robots are loaded lazily, on first use)."""
     settings = settings or get_settings()
-    app = FastAPI(title="Denavit", version="0.1.0", description=DESCRIPTION, lifespan=lifespan)
+    app = FastAPI(
+        title="Denavit",
+        version="0.1.0",
+        description=DESCRIPTION,
+        lifespan=lifespan,
+        docs_url=None,  # FastAPI's pages load from CDNs: app.api.docs_pages serves them offline
+        redoc_url=None,
+    )
     app.state.settings = settings
     limits = UrdfLimits(
         xml=XmlLimits(
@@ -122,6 +129,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         app.include_router(router)
     app.include_router(metrics.router)
     openapi.install(app)  # error responses documented as sent (problem+json)
+    docs_pages.install(app)  # /docs, /redoc and /static, all from the package
     # add_middleware puts each new one outside the previous ones.
     app.add_middleware(MethodsMiddleware)
     app.add_middleware(BodyLimitMiddleware, max_body_bytes=settings.max_body_bytes)
