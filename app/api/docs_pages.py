@@ -30,7 +30,9 @@ from fastapi.openapi.docs import (
     get_swagger_ui_oauth2_redirect_html,
 )
 from starlette.responses import HTMLResponse, Response
+from starlette.routing import Mount
 from starlette.staticfiles import StaticFiles
+from starlette.types import Receive, Scope, Send
 
 log = logging.getLogger("denavit")
 
@@ -65,6 +67,21 @@ def redoc_bundle() -> bytes:
     return data.replace(REDOC_LOGO, BLANK_IMAGE)
 
 
+class LabelledStaticFiles(StaticFiles):
+    """:class:`StaticFiles` whose requests name their mount as ``scope["route"]``.
+
+    Metrics and access logs label a request by its route's path; FastAPI sets it for its
+    own routes only, so files under ``/static`` would be counted as ``unmatched``.
+    """
+
+    mount: Mount | None = None
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if self.mount is not None:
+            scope["route"] = self.mount
+        await super().__call__(scope, receive, send)
+
+
 def _root(request: Request) -> str:
     """The ASGI ``root_path`` of the request, without a trailing slash."""
     return request.scope.get("root_path", "").rstrip("/")
@@ -78,7 +95,9 @@ def install(app: FastAPI) -> None:
     are not added when the application has no OpenAPI document (``openapi_url=None``).
     """
     if not any(getattr(r, "name", None) == "static" for r in app.routes):
-        app.mount(STATIC_URL, StaticFiles(directory=STATIC_DIR), name="static")
+        files = LabelledStaticFiles(directory=STATIC_DIR)
+        app.mount(STATIC_URL, files, name="static")
+        files.mount = next(r for r in app.routes if isinstance(r, Mount) and r.app is files)
     openapi_url = app.openapi_url
     if not openapi_url:
         return
@@ -114,8 +133,11 @@ def install(app: FastAPI) -> None:
     async def redoc_js(request: Request) -> Response:
         return Response(redoc_bundle(), media_type="text/javascript; charset=utf-8")
 
-    app.add_route("/docs", swagger_ui, include_in_schema=False)
+    # FastAPI routes (not Starlette's, as FastAPI's own pages are): labelled in metrics.
+    pages = [("/docs", swagger_ui), ("/redoc", redoc), (REDOC_JS, redoc_js)]
     if redirect_url:
-        app.add_route(redirect_url, swagger_ui_redirect, include_in_schema=False)
-    app.add_route("/redoc", redoc, include_in_schema=False)
-    app.add_route(REDOC_JS, redoc_js, include_in_schema=False)
+        pages.append((redirect_url, swagger_ui_redirect))
+    for path, endpoint in pages:
+        app.add_api_route(
+            path, endpoint, methods=["GET"], include_in_schema=False, response_class=Response
+        )

@@ -15,7 +15,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from tests.helpers import ROOT, problem
+from tests.helpers import ROOT, parse_metrics, problem
 
 PAGES = ["/docs", "/redoc", "/docs/oauth2-redirect"]
 ABSOLUTE_URL = re.compile(r"""(?:https?:)?//[^\s"'<>)]+""", re.IGNORECASE)
@@ -123,3 +123,28 @@ def test_static_serves_its_files_and_nothing_else(app, client) -> None:
         status, body = asyncio.run(_raw_get(app, path))
         assert status == 404, (path, body)
         assert b"create_app" not in body and body != source
+
+
+def test_metrics_label_the_pages_and_static_files_by_route(client) -> None:
+    """Not ``unmatched`` (the label of requests no route takes): ``/docs``, ``/static``."""
+
+    def counts() -> dict[tuple[str, int], float]:
+        samples = parse_metrics(client.get("/metrics").text)
+        return {
+            (route, status): samples.get(
+                f'denavit_http_requests_total{{method="GET",route="{route}",status="{status}"}}',
+                0.0,
+            )
+            for route, status in (("/docs", 200), ("/static", 200), ("/static", 404))
+        }
+
+    before = counts()
+    client.get("/docs")
+    client.get("/static/vendor/manifest.json")
+    client.get("/static/vendor/does-not-exist")
+    after = counts()
+    assert {k: after[k] - before[k] for k in before} == {
+        ("/docs", 200): 1,
+        ("/static", 200): 1,
+        ("/static", 404): 1,
+    }
