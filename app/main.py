@@ -25,7 +25,7 @@ from fastapi import FastAPI
 from starlette.middleware.cors import CORSMiddleware
 
 from app import api, openapi
-from app.api import errors, metrics, viewer
+from app.api import docs_pages, errors, metrics, static_files, viewer
 from app.body_limit import BodyLimitMiddleware
 from app.documents.archive import ArchiveLimits
 from app.documents.urdf import UrdfLimits
@@ -95,7 +95,14 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
 def create_app(settings: Settings | None = None) -> FastAPI:
     """Build the application (robots are loaded lazily, on first use)."""
     settings = settings or get_settings()
-    app = FastAPI(title="Denavit", version="0.1.0", description=DESCRIPTION, lifespan=lifespan)
+    app = FastAPI(
+        title="Denavit",
+        version="0.1.0",
+        description=DESCRIPTION,
+        lifespan=lifespan,
+        docs_url=None,  # FastAPI's pages load from CDNs: app.api.docs_pages serves them offline
+        redoc_url=None,
+    )
     app.state.settings = settings
     limits = UrdfLimits(
         xml=XmlLimits(
@@ -121,8 +128,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     for router in api.ROUTERS:
         app.include_router(router)
     app.include_router(metrics.router)
-    viewer.install(app)  # GET /viewer and /static (not in the OpenAPI document)
+    app.include_router(viewer.router)  # GET /viewer (not in the OpenAPI document)
     openapi.install(app)  # error responses documented as sent (problem+json)
+    docs_pages.install(app)  # /docs and /redoc, offline
+    static_files.mount(app)  # their scripts and styles, from the package
     # add_middleware puts each new one outside the previous ones.
     app.add_middleware(MethodsMiddleware)
     app.add_middleware(BodyLimitMiddleware, max_body_bytes=settings.max_body_bytes)

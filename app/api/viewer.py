@@ -14,17 +14,15 @@ routes is part of the OpenAPI document.
 from __future__ import annotations
 
 import html
-from pathlib import Path
 
-from fastapi import APIRouter, FastAPI
+from fastapi import APIRouter
 from fastapi.responses import HTMLResponse
-from fastapi.staticfiles import StaticFiles
 
 from app.api.deps import RegistryDep
 from app.api.schemas import RobotId
+from app.api.static_files import STATIC_DIR
 from app.kinematics.errors import UnknownNameError
 
-STATIC_DIR = Path(__file__).resolve().parent.parent / "static"
 PAGE = STATIC_DIR / "viewer" / "index.html"
 
 router = APIRouter(tags=["viewer"], include_in_schema=False)
@@ -47,15 +45,3 @@ async def viewer_robot_page(robot_id: RobotId, reg: RegistryDep) -> HTMLResponse
     if not reg.exists(robot_id):
         raise UnknownNameError("robot", robot_id, "robot_id", reg.ids())
     return _page(robot_id)
-
-
-def mount_static(app: FastAPI) -> None:
-    """Serve app/static at /static (once, whoever asks first: viewer or docs pages)."""
-    if not any(getattr(r, "name", None) == "static" for r in app.router.routes):
-        app.mount("/static", StaticFiles(directory=STATIC_DIR), name="static")
-
-
-def install(app: FastAPI) -> None:
-    """Add the viewer's routes and its static files to ``app``."""
-    app.include_router(router)
-    mount_static(app)

@@ -1,5 +1,9 @@
 """What the browser tests share: Chromium's flags, a page that records errors, screenshots.
 
+The viewer's helpers open a robot and wait until the page is idle (``denavit.idle()``:
+loaded, no request in flight), and read what it draws (``framePose``: three.js, root frame)
+next to the API's own answers.
+
 Screenshots are test artifacts: ``test-artifacts/browser/<test>-<state>.png`` under the
 repository (``DENAVIT_TEST_ARTIFACTS`` to put them elsewhere). Each one must be non-blank:
 the standard deviation of its grey levels is at least :data:`MIN_PIXEL_STD`.
@@ -13,7 +17,8 @@ from pathlib import Path
 from urllib.parse import urlsplit
 
 import httpx
-from PIL import Image, ImageStat
+import numpy as np
+from PIL import Image, ImageChops, ImageStat
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -46,6 +51,14 @@ def pixel_std(png: Path) -> float:
     """Standard deviation of the grey levels of an image (0 for a blank one)."""
     with Image.open(png) as im:
         return ImageStat.Stat(im.convert("L")).stddev[0]
+
+
+def pixels_changed(a: Path, b: Path) -> float:
+    """Fraction of the pixels that differ between two screenshots of the same size."""
+    with Image.open(a) as im_a, Image.open(b) as im_b:
+        diff = ImageChops.difference(im_a.convert("RGB"), im_b.convert("RGB")).convert("L")
+        changed = sum(diff.point(lambda v: 255 if v > 16 else 0).histogram()[255:])
+        return changed / (diff.width * diff.height)
 
 
 class Tab:
@@ -94,3 +107,45 @@ class Tab:
         std = pixel_std(path)
         assert std >= MIN_PIXEL_STD, f"{path} looks blank (grey-level std {std:.2f})"
         return path
+
+
+# ------------------------------------------------------------------------- the viewer
+#: Bent, well-conditioned configurations, away from the neutrals' stretched elbows.
+BENT = {
+    "panda": [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.785, 0.0],
+    "ur5": [0.3, -1.2, 1.4, -1.6, -1.5, 0.2],
+}
+READY = "window.denavit && window.denavit.idle()"
+WAIT_MS = 90_000
+
+
+def open_viewer(tab: Tab, robot_id: str) -> dict:
+    """Open /viewer/{robot_id}, wait until loaded and idle; the robot's GET /robots/{id}."""
+    tab.goto(f"/viewer/{robot_id}")
+    tab.page.wait_for_function(READY, timeout=WAIT_MS)
+    return tab.http.get(f"/robots/{robot_id}").json()
+
+
+def wait_idle(tab: Tab) -> None:
+    tab.page.wait_for_function(READY, timeout=WAIT_MS)
+
+
+def page_q(tab: Tab) -> list[float]:
+    return tab.page.evaluate("denavit.viewer.q")
+
+
+def rendered_pose(tab: Tab, frame: str) -> dict:
+    """The frame's pose as the page draws it (three.js, root frame)."""
+    return tab.page.evaluate("f => denavit.viewer.robot.framePose(f)", frame)
+
+
+def api_fk(tab: Tab, robot_id: str, q: list[float], frame: str) -> dict:
+    resp = tab.http.post(f"/robots/{robot_id}/fk", json={"q": q, "frames": [frame]})
+    assert resp.status_code == 200, resp.text
+    return resp.json()["poses"][frame]
+
+
+def assert_same_pose(a: dict, b: dict, tol: float = 1e-9) -> None:
+    np.testing.assert_allclose(a["position"], b["position"], atol=tol)
+    qa, qb = np.array(a["orientation"]), np.array(b["orientation"])
+    assert min(np.abs(qa - qb).max(), np.abs(qa + qb).max()) < tol, (qa, qb)

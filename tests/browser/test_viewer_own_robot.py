@@ -1,0 +1,122 @@
+"""The viewer on a lab's own description package: meshes from GET /robots/{id}/files/...
+
+The packages are uploaded through the API (POST /robots/package) as a lab would: the
+catalog's Panda laid out as a ROS package (STL and Collada meshes by relative path), and a
+one-link robot whose mesh is a Wavefront OBJ cube.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from tests.browser.tools import READY, WAIT_MS, Tab
+from tests.packages import panda_files, zip_bytes
+
+CUBE_OBJ = b"""o cube
+v -0.05 -0.05 0
+v 0.05 -0.05 0
+v 0.05 0.05 0
+v -0.05 0.05 0
+v -0.05 -0.05 0.1
+v 0.05 -0.05 0.1
+v 0.05 0.05 0.1
+v -0.05 0.05 0.1
+f 1 3 2
+f 1 4 3
+f 5 6 7
+f 5 7 8
+f 1 2 6
+f 1 6 5
+f 2 3 7
+f 2 7 6
+f 3 4 8
+f 3 8 7
+f 4 1 5
+f 4 5 8
+"""
+
+CUBE_URDF = b"""<?xml version="1.0"?>
+<robot name="cube_arm">
+  <link name="base"/>
+  <link name="arm">
+    <visual><geometry><mesh filename="package://cube_arm/meshes/cube.obj"/></geometry></visual>
+  </link>
+  <link name="tip"/>
+  <joint name="j1" type="revolute">
+    <parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1.5" upper="1.5" effort="1" velocity="1"/>
+  </joint>
+  <joint name="j2" type="fixed">
+    <parent link="arm"/><child link="tip"/><origin xyz="0.3 0 0.1"/>
+  </joint>
+</robot>
+"""
+
+PACKAGE_XML = (
+    b'<?xml version="1.0"?><package format="3"><name>cube_arm</name>'
+    b"<version>1.0.0</version><description>test</description></package>"
+)
+
+
+def upload(tab: Tab, name: str, files: dict[str, bytes], description: str) -> None:
+    resp = tab.http.post(
+        "/robots/package",
+        data={"name": name, "description": description},
+        files={"archive": ("p.zip", zip_bytes(files))},
+    )
+    assert resp.status_code == 201, resp.text
+
+
+def open_and_record(tab: Tab, robot_id: str) -> list[str]:
+    """Open the viewer on ``robot_id``; the URL paths of every request the page made."""
+    paths: list[str] = []
+    tab.page.on("request", lambda r: paths.append(r.url.split("://", 1)[1].split("/", 1)[1]))
+    tab.goto(f"/viewer/{robot_id}")
+    tab.page.wait_for_function(READY, timeout=WAIT_MS)
+    return paths
+
+
+def test_own_panda_package_loads_its_meshes_from_the_files_route(page: Tab) -> None:
+    upload(page, "lab_panda", panda_files(), "urdf/panda.urdf")
+    requested = open_and_record(page, "lab_panda")
+    stats = page.page.evaluate("denavit.viewer.robot.stats")
+    assert stats["meshes"] == stats["loaded"] == 11 and stats["failed"] == 0, stats
+    # Each distinct visual mesh file, fetched from the files route (the fingers share one).
+    urdf = panda_files()["urdf/panda.urdf"].decode()
+    visual = {
+        f"robots/lab_panda/files/{m[3:]}" for m in re.findall(r'"(\.\./meshes/visual/[^"]+)"', urdf)
+    }
+    assert len(visual) == 10
+    assert {p for p in requested if p.endswith((".dae", ".stl"))} == visual
+    # Posed like the catalog's Panda: the same tip at the same configuration.
+    q = [0.2, -0.4, 0.1, -2.0, 0.3, 1.9, 0.5, 0.01]
+    page.page.evaluate("q => denavit.viewer.setQ(q, 'test')", q)
+    page.page.wait_for_function(READY, timeout=WAIT_MS)
+    pose = page.page.evaluate("denavit.viewer.robot.framePose('panda_hand_tcp')")
+    body = {"q": q, "frames": ["panda_hand_tcp"]}
+    ref = page.http.post("/robots/panda/fk", json=body).json()["poses"]["panda_hand_tcp"]
+    np.testing.assert_allclose(pose["position"], ref["position"], atol=1e-9)
+    page.shot("own-panda")
+    assert page.errors() == []
+
+
+def test_obj_mesh_of_an_own_package_is_drawn(page: Tab) -> None:
+    files = {
+        "package.xml": PACKAGE_XML,
+        "urdf/cube_arm.urdf": CUBE_URDF,
+        "meshes/cube.obj": CUBE_OBJ,
+    }
+    upload(page, "cube_arm", files, "urdf/cube_arm.urdf")
+    open_and_record(page, "cube_arm")
+    stats = page.page.evaluate("denavit.viewer.robot.stats")
+    assert (stats["meshes"], stats["loaded"], stats["failed"]) == (1, 1, 0), stats
+    # The cube's 12 triangles, as loaded by the OBJ loader.
+    triangles = page.page.evaluate(
+        """(() => { let n = 0; denavit.viewer.robot.root.traverse((o) => {
+             if (o.isMesh) n += o.geometry.attributes.position.count / 3; }); return n; })()"""
+    )
+    assert triangles == 12
+    page.shot("obj")
+    assert page.errors() == []
