@@ -68,9 +68,9 @@ CHROMIUM ?= /usr/bin/chromium
 browser:
 	@test -x $(CHROMIUM) || { \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
-	    DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends chromium \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y chromium \
 	      || { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y \
-	           --no-install-recommends chromium; }; \
+	           chromium; }; \
 	  else echo "no $(CHROMIUM): install Debian's chromium (sudo apt-get install chromium)"; \
 	    exit 1; fi; }
 
