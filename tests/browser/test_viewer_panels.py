@@ -140,6 +140,37 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
     assert page.errors() == []
 
 
+@pytest.mark.parametrize("robot_id", ["panda_dh", "so100"])
+def test_self_collision_highlights_both_links_of_each_pair(page: Tab, robot_id: str) -> None:
+    """Both neutrals self-collide (a DH robot's generated URDF, a mesh robot's own)."""
+    page.goto(f"/viewer/{robot_id}")
+    wait_idle(page)
+    neutral = page.http.get(f"/robots/{robot_id}").json()["neutral"]
+    api = page.http.post(f"/robots/{robot_id}/collisions", json={"q": neutral})
+    assert api.status_code == 200, api.text
+    hits = [p for p in api.json()["pairs"] if p["in_collision"]]
+    assert hits and all(p["kind"] == "self" for p in hits), hits
+    links = {p["a"] for p in hits} | {p["b"] for p in hits}
+
+    page.page.check("#collision-toggle")
+    wait_idle(page)
+    all_links = page.page.evaluate("Object.keys(denavit.viewer.robot.root.links)")
+    lit = {
+        name
+        for name in all_links
+        if page.page.evaluate("n => denavit.viewer.robot.isHighlighted(n)", name)
+    }
+    assert lit == links, (lit, links)
+    page.shot("self-collision")
+    page.page.uncheck("#collision-toggle")
+    wait_idle(page)
+    assert not any(
+        page.page.evaluate("n => denavit.viewer.robot.isHighlighted(n)", n) for n in all_links
+    )
+    assert page.page.inner_text("#collision-readout") == ""
+    assert page.errors() == []
+
+
 # ------------------------------------------------------------------------- reachability
 def build_map(tab: Tab) -> dict:
     """A small map built through the API (a background job, polled to its end)."""
@@ -237,6 +268,12 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
     assert answer["fraction"] == expected["fraction"]
     assert len(answer["points"]) == len(expected["points"]) > 2
     assert f"fraction {expected['fraction']:.2f}" in page.page.inner_text("#path-readout")
+    line = page.page.evaluate(
+        "Array.from(denavit.panels.path.line.geometry.attributes.position.array)"
+    )  # float32 vertices: the line asked for, from the tip to the waypoint
+    start = api_fk(page, BENT, tip)["position"]
+    np.testing.assert_allclose(line[:3], start, atol=1e-6)
+    np.testing.assert_allclose(line[-3:], body["waypoints"][0]["position"], atol=1e-6)
 
     page.page.click("#path-play")
     last = len(expected["points"]) - 1

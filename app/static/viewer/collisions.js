@@ -49,7 +49,7 @@ export class CollisionsPanel {
     this.section.innerHTML = `<h2>Collisions</h2>
       <label>Scene <select id="scene-picker"><option value="">none</option></select></label>
       <label><input id="collision-toggle" type="checkbox"> check collisions</label>
-      <pre id="collision-readout"></pre>`;
+      <p id="collision-readout" style="white-space: pre-line"></p>`;
     this.picker = document.getElementById('scene-picker');
     this.toggle = document.getElementById('collision-toggle');
     this.readout = document.getElementById('collision-readout');

@@ -11,17 +11,18 @@ import { Latest } from './latest.js';
 //: answer the same on every call (see the route's random_seed), 40 ms per point at most.
 export const PATH_OPTIONS = { timeout_ms: 40, max_iterations: 500, random_seed: 0 };
 const POINTS_PER_SECOND = 30;
+const LINE_PIECES = 64;
 
 export class PathPanel {
   constructor(viewer) {
     this.viewer = viewer;
     this.section = document.getElementById('panel-path');
     this.section.innerHTML = `<h2>Cartesian path</h2>
-      <label>tip moves by (m)
-        <input id="path-dx" type="number" step="0.01" value="0" aria-label="dx" style="width: 5em">
-        <input id="path-dy" type="number" step="0.01" value="0" aria-label="dy" style="width: 5em">
-        <input id="path-dz" type="number" step="0.01" value="-0.05" aria-label="dz" style="width: 5em">
-      </label>
+      <p>tip moves by dx, dy, dz (m, root frame)<br>
+        <input id="path-dx" type="number" step="0.01" value="0" aria-label="dx" style="width: 6em">
+        <input id="path-dy" type="number" step="0.01" value="0" aria-label="dy" style="width: 6em">
+        <input id="path-dz" type="number" step="0.01" value="-0.05" aria-label="dz"
+               style="width: 6em"></p>
       <button id="path-plan" type="button">Plan line</button>
       <button id="path-play" type="button" disabled>Play</button>
       <input id="path-scrub" type="range" min="0" max="0" step="1" value="0" disabled
@@ -36,12 +37,20 @@ export class PathPanel {
     this.index = -1; // the point shown
     this.playing = false;
 
+    // the line asked for, drawn over the robot, with a dot at its end
     this.line = new THREE.Line(
       new THREE.BufferGeometry(),
-      new THREE.LineBasicMaterial({ color: 0x1565c0 }),
+      new THREE.LineBasicMaterial({ color: 0xef6c00, depthTest: false }),
     );
     this.line.name = 'cartesian-path';
+    this.line.renderOrder = 10;
     this.line.visible = false;
+    this.end = new THREE.Mesh(
+      new THREE.SphereGeometry(0.008, 12, 8),
+      new THREE.MeshBasicMaterial({ color: 0xef6c00, depthTest: false }),
+    );
+    this.end.renderOrder = 10;
+    this.line.add(this.end);
     viewer.stage.world.add(this.line);
 
     this.planner = new Latest((delta) => this._plan(delta), (e) => this._failed(e));
@@ -73,7 +82,7 @@ export class PathPanel {
   async _plan(delta) {
     const v = this.viewer;
     const q = v.q.slice();
-    const frame = v.detail.end_effector;
+    const { id, end_effector: frame } = v.detail;
     const fk = await v.api.post(v.path('/fk'), { q, frames: [frame] });
     const start = fk.poses[frame];
     const to = start.position.map((x, i) => x + delta[i]);
@@ -84,12 +93,16 @@ export class PathPanel {
     };
     this.readout.textContent = 'planning…';
     const answer = await v.api.post(v.path('/ik/path'), body);
+    if (v.detail.id !== id) return; // another robot was loaded meanwhile
     this.lastRequest = body;
     this.lastAnswer = answer;
     this.line.geometry.dispose();
+    // in short pieces: a long line that passes behind the camera is still drawn in front
+    const [a, b] = [start.position, to].map((p) => new THREE.Vector3(...p));
     this.line.geometry = new THREE.BufferGeometry().setFromPoints(
-      [start.position, to].map((p) => new THREE.Vector3(...p)),
+      Array.from({ length: LINE_PIECES + 1 }, (_, k) => a.clone().lerp(b, k / LINE_PIECES)),
     );
+    this.end.position.fromArray(to);
     this.line.visible = true;
     const n = answer.points.length;
     this.scrub.max = String(n - 1);
