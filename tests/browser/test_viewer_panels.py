@@ -96,7 +96,7 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
     touched = {p["b"] for p in hits if p["kind"] == "environment"}
     assert links and touched == {"block"}, hits  # the scene is what the test means
 
-    page.page.focus("#scene-picker")
+    page.page.click("#scene-refresh")  # lists the scenes again (they are listed on load)
     wait_idle(page)
     page.page.select_option("#scene-picker", "viewer-block")
     page.page.check("#collision-toggle")

@@ -47,7 +47,8 @@ export class CollisionsPanel {
     this.viewer = viewer;
     this.section = document.getElementById('panel-collisions');
     this.section.innerHTML = `<h2>Collisions</h2>
-      <label>Scene <select id="scene-picker"><option value="">none</option></select></label>
+      <label>Scene <select id="scene-picker"><option value="">none</option></select>
+        <button id="scene-refresh" type="button" title="List the scenes again">↻</button></label>
       <label><input id="collision-toggle" type="checkbox"> check collisions</label>
       <p id="collision-readout" style="white-space: pre-line"></p>`;
     this.picker = document.getElementById('scene-picker');
@@ -61,7 +62,8 @@ export class CollisionsPanel {
     this.loader = new Latest((name) => this._loadScene(name), (e) => viewer.report(e));
     this.check = new Latest((q, scene) => this._check(q, scene), (e) => viewer.report(e));
     this.lister = new Latest(() => this.listScenes(), (e) => viewer.report(e));
-    this.picker.addEventListener('focus', () => this.lister.request());
+    const refresh = document.getElementById('scene-refresh');
+    refresh.addEventListener('click', () => this.lister.request());
     this.picker.addEventListener('change', () => this.loader.request(this.picker.value));
     this.toggle.addEventListener('change', () => this.update());
   }

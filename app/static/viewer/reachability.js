@@ -13,7 +13,8 @@ export class ReachabilityPanel {
     this.viewer = viewer;
     this.section = document.getElementById('panel-reachability');
     this.section.innerHTML = `<h2>Reachability</h2>
-      <label>Map <select id="map-picker" style="max-width: 240px"><option value="">none</option></select>
+      <label>Map <select id="map-picker" style="max-width: 240px">
+        <option value="">none</option></select>
         <button id="map-refresh" type="button" title="List the maps again">↻</button></label>
       <label>Slice z <input id="map-layer" type="range" min="0" max="0" step="1" value="0">
         <output id="map-z"></output></label>
