@@ -318,3 +318,26 @@ def test_path_the_arm_cannot_follow_shows_where_and_why_it_stopped(page: Tab, dz
     page.page.locator("#path-readout").scroll_into_view_if_needed()
     page.shot("path-stopped")
     assert page.errors() == []
+
+
+def test_path_the_api_refuses_clears_the_last_one_and_says_why(page: Tab) -> None:
+    """A line too long for the server's budget (points × timeout_ms > ik_max_request_s) is
+    a 422 naming max_step: the page shows the problem and has nothing left to play."""
+    detail = open_page(page)
+    set_q(page, BENT)
+    assert plan_in_page(page, -0.05)["fraction"] == 1.0
+    far = 40.0
+    body, _ = api_path(page, BENT, detail["end_effector"], -0.05)
+    body["waypoints"][0]["position"][2] += far
+    refused = page.http.post(f"/robots/{ROBOT}/ik/path", json=body)
+    assert refused.status_code == 422 and refused.json()["field"] == "max_step", refused.text
+
+    assert plan_in_page(page, far - 0.05) is None
+    readout = page.page.inner_text("#path-readout")
+    assert readout.startswith("not planned: 422 (max_step)"), readout
+    assert page.page.evaluate("denavit.panels.path.line.visible") is False
+    assert page.page.is_disabled("#path-play") and page.page.is_disabled("#path-scrub")
+    assert "(max_step)" in page.page.inner_text("#status")
+    # The browser's own log line of the 422 response is the only console message.
+    assert page.page_errors == [] and page.external == []
+    assert all("status of 422" in e for e in page.console_errors), page.console_errors

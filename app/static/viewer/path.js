@@ -63,14 +63,20 @@ export class PathPanel {
   }
 
   build() {
-    this.stop();
     this.lastRequest = null;
+    this.clear('');
+  }
+
+  // Nothing to play: no line, no answer, the readout says `text`.
+  clear(text) {
+    this.stop();
     this.lastAnswer = null;
     this.index = -1;
     this.line.visible = false;
-    this.readout.textContent = '';
     this.playButton.disabled = true;
     this.scrub.disabled = true;
+    this.readout.textContent = text;
+    this.viewer.stage.render();
   }
 
   // Plan the line for the (dx, dy, dz) of the inputs (metres, root frame).
@@ -114,8 +120,9 @@ export class PathPanel {
     v.stage.render();
   }
 
+  // A request the API refused (e.g. a line too long for the server's budget): nothing to play.
   _failed(err) {
-    this.readout.textContent = `not planned: ${err.message || err}`;
+    this.clear(`not planned: ${err.message || err}`);
     this.viewer.report(err);
   }
 
