@@ -60,6 +60,15 @@ def quat_matrix(x: float, y: float, z: float, w: float) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- collisions
+def highlighted(tab: Tab) -> tuple[list[str], set[str]]:
+    """Every link of the robot on the page, and those drawn highlighted (red)."""
+    links = tab.page.evaluate(
+        "(() => { const r = denavit.viewer.robot;"
+        " return Object.keys(r.root.links).map((n) => [n, r.isHighlighted(n)]); })()"
+    )
+    return [n for n, _ in links], {n for n, lit in links if lit}
+
+
 def expected_extent(o: dict) -> np.ndarray:
     """Half extents along the obstacle's own x, y, z (ObstacleIn: cylinders and capsules
     along local z; a capsule's length is the segment between its hemisphere centres)."""
@@ -104,12 +113,7 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
 
     answer = page.page.evaluate("denavit.panels.collisions.lastAnswer")
     assert answer["q"] == BENT and answer["scene"] == "viewer-block"
-    all_links = page.page.evaluate("Object.keys(denavit.viewer.robot.root.links)")
-    lit = {
-        name
-        for name in all_links
-        if page.page.evaluate("n => denavit.viewer.robot.isHighlighted(n)", name)
-    }
+    all_links, lit = highlighted(page)
     assert lit == links, (lit, links)
     assert set(all_links) - lit, "every link is red"
     readout = page.page.inner_text("#collision-readout")
@@ -132,9 +136,7 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
 
     # Free again: nothing red, the readout says so.
     set_q(page, detail["neutral"])
-    assert not any(
-        page.page.evaluate("n => denavit.viewer.robot.isHighlighted(n)", n) for n in all_links
-    )
+    assert highlighted(page)[1] == set()
     assert not any(d["red"] for d in page.page.evaluate("denavit.panels.collisions.drawn()"))
     assert page.page.inner_text("#collision-readout").startswith("no collision")
     assert page.errors() == []
@@ -154,19 +156,12 @@ def test_self_collision_highlights_both_links_of_each_pair(page: Tab, robot_id: 
 
     page.page.check("#collision-toggle")
     wait_idle(page)
-    all_links = page.page.evaluate("Object.keys(denavit.viewer.robot.root.links)")
-    lit = {
-        name
-        for name in all_links
-        if page.page.evaluate("n => denavit.viewer.robot.isHighlighted(n)", name)
-    }
+    _, lit = highlighted(page)
     assert lit == links, (lit, links)
     page.shot("self-collision")
     page.page.uncheck("#collision-toggle")
     wait_idle(page)
-    assert not any(
-        page.page.evaluate("n => denavit.viewer.robot.isHighlighted(n)", n) for n in all_links
-    )
+    assert highlighted(page)[1] == set()
     assert page.page.inner_text("#collision-readout") == ""
     assert page.errors() == []
 
