@@ -9,6 +9,9 @@ import { Latest } from './latest.js';
 import { JointsPanel } from './joints.js';
 import { IkPanel } from './ik.js';
 import { EllipsoidPanel } from './ellipsoid.js';
+import { CollisionsPanel } from './collisions.js';
+import { ReachabilityPanel } from './reachability.js';
+import { PathPanel } from './path.js';
 
 class Viewer {
   constructor() {
@@ -79,11 +82,15 @@ const joints = new JointsPanel(viewer);
 const ik = new IkPanel(viewer);
 const ellipsoid = new EllipsoidPanel(viewer);
 viewer.panels.push(joints, ik, ellipsoid);
+const collisions = new CollisionsPanel(viewer);
+const reachability = new ReachabilityPanel(viewer);
+const path = new PathPanel(viewer);
+viewer.panels.push(collisions, reachability, path);
 
 // The tests' window on the viewer (read-only use; the page itself never reads it).
 window.denavit = {
   viewer,
-  panels: { joints, ik, ellipsoid },
+  panels: { joints, ik, ellipsoid, collisions, reachability, path },
   get ready() { return viewer.ready; },
   idle: () => viewer.ready && Latest.pending === 0,
   frames: () => viewer.stage.frames,
