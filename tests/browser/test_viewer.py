@@ -24,6 +24,7 @@ from tests.browser.tools import (
     page_q,
     pixels_changed,
     rendered_pose,
+    set_q,
     wait_idle,
 )
 
@@ -123,8 +124,7 @@ def test_dragging_the_gizmo_solves_ik_to_the_new_target(
     robot = open_viewer(page, robot_id)
     tip = robot["end_effector"]
     # From a bent arm, away from the neutral's stretched (near-singular) elbow.
-    page.page.evaluate("q => denavit.viewer.setQ(q, 'test')", BENT[robot_id])
-    wait_idle(page)
+    set_q(page, BENT[robot_id])
     q0 = page_q(page)
     start = rendered_pose(page, tip)
     axis = "X" if pixels[0] else "Z"
@@ -174,8 +174,7 @@ def test_dragging_the_gizmo_solves_ik_to_the_new_target(
 
 def test_other_branches_are_listed_and_taken_on_click(page: Tab) -> None:
     open_viewer(page, "ur5")
-    page.page.evaluate("q => denavit.viewer.setQ(q, 'test')", BENT["ur5"])
-    wait_idle(page)
+    set_q(page, BENT["ur5"])
     tip = rendered_pose(page, "tool0")
     page.page.click("#branches-button")
     page.page.wait_for_function("document.querySelectorAll('#branches button').length > 1")
@@ -202,7 +201,7 @@ def assert_colour(hex_colour: str, answer: dict) -> None:
 @pytest.mark.parametrize("part", ["translation", "rotation"])
 def test_ellipsoid_axes_equal_the_api_singular_values(page: Tab, part: str) -> None:
     robot = open_viewer(page, "panda")
-    page.page.evaluate("denavit.viewer.setQ([0.2, -0.4, 0.1, -2.0, 0.3, 1.9, 0.5, 0.0], 'test')")
+    set_q(page, [0.2, -0.4, 0.1, -2.0, 0.3, 1.9, 0.5, 0.0])
     if part == "rotation":
         page.page.check("#ellipsoid-rotational")
     page.page.check("#ellipsoid-toggle")

@@ -11,7 +11,7 @@ import re
 
 import numpy as np
 
-from tests.browser.tools import READY, WAIT_MS, Tab
+from tests.browser.tools import READY, WAIT_MS, Tab, set_q
 from tests.packages import panda_files, zip_bytes
 
 CUBE_OBJ = b"""o cube
@@ -92,8 +92,7 @@ def test_own_panda_package_loads_its_meshes_from_the_files_route(page: Tab) -> N
     assert {p for p in requested if p.endswith((".dae", ".stl"))} == visual
     # Posed like the catalog's Panda: the same tip at the same configuration.
     q = [0.2, -0.4, 0.1, -2.0, 0.3, 1.9, 0.5, 0.01]
-    page.page.evaluate("q => denavit.viewer.setQ(q, 'test')", q)
-    page.page.wait_for_function(READY, timeout=WAIT_MS)
+    set_q(page, q)
     pose = page.page.evaluate("denavit.viewer.robot.framePose('panda_hand_tcp')")
     body = {"q": q, "frames": ["panda_hand_tcp"]}
     ref = page.http.post("/robots/panda/fk", json=body).json()["poses"]["panda_hand_tcp"]

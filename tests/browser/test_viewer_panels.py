@@ -15,37 +15,20 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from tests.browser.tools import Tab
+from tests.browser.tools import (
+    BENT,
+    WAIT_MS,
+    Tab,
+    api_fk,
+    open_viewer,
+    set_q,
+    wait_idle,
+)
 
 ROBOT = "panda"
 #: A bent, well-conditioned panda configuration (its neutral has joint 4 at a limit).
-BENT = [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.785, 0.0]
-IDLE = "window.denavit && window.denavit.idle()"
-WAIT_MS = 90_000
-#: The path panel's planning options (app/static/viewer/path.js PATH_OPTIONS).
 PATH_OPTIONS = {"timeout_ms": 40, "max_iterations": 500, "random_seed": 0}
-
-
-def wait_idle(tab: Tab) -> None:
-    tab.page.wait_for_function(IDLE, timeout=WAIT_MS)
-
-
-def open_page(tab: Tab) -> dict:
-    """The viewer on the panda, loaded and idle; GET /robots/panda."""
-    tab.goto(f"/viewer/{ROBOT}")
-    wait_idle(tab)
-    return tab.http.get(f"/robots/{ROBOT}").json()
-
-
-def set_q(tab: Tab, q: list[float]) -> None:
-    tab.page.evaluate("q => denavit.viewer.setQ(q.slice(), 'test')", q)
-    wait_idle(tab)
-
-
-def api_fk(tab: Tab, q: list[float], frame: str) -> dict:
-    resp = tab.http.post(f"/robots/{ROBOT}/fk", json={"q": q, "frames": [frame]})
-    assert resp.status_code == 200, resp.text
-    return resp.json()["poses"][frame]
+PANDA_BENT = BENT[ROBOT]
 
 
 def quat_matrix(x: float, y: float, z: float, w: float) -> np.ndarray:
@@ -82,8 +65,8 @@ def expected_extent(o: dict) -> np.ndarray:
 
 
 def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
-    detail = open_page(page)
-    hand = api_fk(page, BENT, "panda_hand")["position"]
+    detail = open_viewer(page, ROBOT)
+    hand = api_fk(page, ROBOT, PANDA_BENT, "panda_hand")["position"]
     s = np.sqrt(0.5)
     obstacles = [
         {"name": "block", "shape": "box", "size": [0.12, 0.16, 0.08],
@@ -98,7 +81,9 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
     resp = page.http.post("/scenes", json={"name": "viewer-block", "obstacles": obstacles})
     assert resp.status_code == 201, resp.text
     scene = resp.json()
-    api = page.http.post(f"/robots/{ROBOT}/collisions", json={"q": BENT, "scene": "viewer-block"})
+    api = page.http.post(
+        f"/robots/{ROBOT}/collisions", json={"q": PANDA_BENT, "scene": "viewer-block"}
+    )
     assert api.status_code == 200, api.text
     hits = [p for p in api.json()["pairs"] if p["in_collision"]]
     links = {p["a"] for p in hits} | {p["b"] for p in hits if p["kind"] == "self"}
@@ -109,10 +94,10 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
     wait_idle(page)
     page.page.select_option("#scene-picker", "viewer-block")
     page.page.check("#collision-toggle")
-    set_q(page, BENT)
+    set_q(page, PANDA_BENT)
 
     answer = page.page.evaluate("denavit.panels.collisions.lastAnswer")
-    assert answer["q"] == BENT and answer["scene"] == "viewer-block"
+    assert answer["q"] == PANDA_BENT and answer["scene"] == "viewer-block"
     all_links, lit = highlighted(page)
     assert lit == links, (lit, links)
     assert set(all_links) - lit, "every link is red"
@@ -186,7 +171,7 @@ def build_map(tab: Tab) -> dict:
 
 def test_reachability_slice_plane_spans_the_map_and_shows_its_slice(page: Tab) -> None:
     meta = build_map(page)
-    open_page(page)
+    open_viewer(page, ROBOT)
     page.page.select_option("#map-picker", meta["map_id"])
     wait_idle(page)
     drawn = page.page.evaluate("denavit.panels.reachability.drawn()")
@@ -240,7 +225,7 @@ def plan_in_page(tab: Tab, dz: float) -> dict:
 
 def api_path(tab: Tab, q: list[float], frame: str, dz: float) -> tuple[dict, dict]:
     """The request the panel should send for a move by dz, and the API's answer to it."""
-    start = api_fk(tab, q, frame)
+    start = api_fk(tab, ROBOT, q, frame)
     x, y, z = start["position"]
     body = {
         "start": q,
@@ -253,11 +238,11 @@ def api_path(tab: Tab, q: list[float], frame: str, dz: float) -> tuple[dict, dic
 
 
 def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
-    detail = open_page(page)
+    detail = open_viewer(page, ROBOT)
     tip = detail["end_effector"]
-    set_q(page, BENT)
+    set_q(page, PANDA_BENT)
     answer = plan_in_page(page, -0.05)
-    body, expected = api_path(page, BENT, tip, -0.05)
+    body, expected = api_path(page, PANDA_BENT, tip, -0.05)
     assert page.page.evaluate("denavit.panels.path.lastRequest") == body
     assert expected["fraction"] == 1.0 and expected["failure"] is None
     assert answer["fraction"] == expected["fraction"]
@@ -266,7 +251,7 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
     line = page.page.evaluate(
         "Array.from(denavit.panels.path.line.geometry.attributes.position.array)"
     )  # float32 vertices: the line asked for, from the tip to the waypoint
-    start = api_fk(page, BENT, tip)["position"]
+    start = api_fk(page, ROBOT, PANDA_BENT, tip)["position"]
     np.testing.assert_allclose(line[:3], start, atol=1e-6)
     np.testing.assert_allclose(line[-3:], body["waypoints"][0]["position"], atol=1e-6)
 
@@ -279,7 +264,7 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
     q_end = expected["points"][-1]["q"]
     np.testing.assert_allclose(page.page.evaluate("denavit.viewer.q"), q_end, atol=1e-12)
     drawn = page.page.evaluate("f => denavit.viewer.robot.framePose(f)", tip)
-    fk = api_fk(page, q_end, tip)
+    fk = api_fk(page, ROBOT, q_end, tip)
     np.testing.assert_allclose(drawn["position"], fk["position"], atol=1e-9)
     np.testing.assert_allclose(
         quat_matrix(*drawn["orientation"]), quat_matrix(*fk["orientation"]), atol=1e-9
@@ -293,16 +278,16 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
         "#path-scrub", "e => { e.value = '0'; e.dispatchEvent(new Event('input')); }"
     )
     wait_idle(page)
-    assert page.page.evaluate("denavit.viewer.q") == BENT
+    assert page.page.evaluate("denavit.viewer.q") == PANDA_BENT
     assert page.errors() == []
 
 
 @pytest.mark.parametrize("dz", [5.0])
 def test_path_the_arm_cannot_follow_shows_where_and_why_it_stopped(page: Tab, dz: float) -> None:
-    detail = open_page(page)
-    set_q(page, BENT)
+    detail = open_viewer(page, ROBOT)
+    set_q(page, PANDA_BENT)
     answer = plan_in_page(page, dz)
-    _, expected = api_path(page, BENT, detail["end_effector"], dz)
+    _, expected = api_path(page, PANDA_BENT, detail["end_effector"], dz)
     failure = expected["failure"]
     assert expected["fraction"] < 1 and failure is not None
     assert answer["fraction"] == expected["fraction"]
@@ -318,11 +303,11 @@ def test_path_the_arm_cannot_follow_shows_where_and_why_it_stopped(page: Tab, dz
 def test_path_the_api_refuses_clears_the_last_one_and_says_why(page: Tab) -> None:
     """A line too long for the server's budget (points × timeout_ms > ik_max_request_s) is
     a 422 naming max_step: the page shows the problem and has nothing left to play."""
-    detail = open_page(page)
-    set_q(page, BENT)
+    detail = open_viewer(page, ROBOT)
+    set_q(page, PANDA_BENT)
     assert plan_in_page(page, -0.05)["fraction"] == 1.0
     far = 40.0
-    body, _ = api_path(page, BENT, detail["end_effector"], -0.05)
+    body, _ = api_path(page, PANDA_BENT, detail["end_effector"], -0.05)
     body["waypoints"][0]["position"][2] += far
     refused = page.http.post(f"/robots/{ROBOT}/ik/path", json=body)
     assert refused.status_code == 422 and refused.json()["field"] == "max_step", refused.text

@@ -130,6 +130,12 @@ def wait_idle(tab: Tab) -> None:
     tab.page.wait_for_function(READY, timeout=WAIT_MS)
 
 
+def set_q(tab: Tab, q: list[float]) -> None:
+    """Pose the robot in the page (as its own controls do) and wait until it is idle."""
+    tab.page.evaluate("q => denavit.viewer.setQ(q.slice(), 'test')", q)
+    wait_idle(tab)
+
+
 def page_q(tab: Tab) -> list[float]:
     return tab.page.evaluate("denavit.viewer.q")
 
