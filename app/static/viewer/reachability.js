@@ -1,5 +1,6 @@
 // A reachability map as a slice plane. The picker lists the robot's stored maps (GET
-// /robots/{id}/reachability/maps; maps are built through the API, POST …/reachability); the
+// /robots/{id}/reachability/maps); "Build" starts a coarse one (POST …/reachability, a
+// write: it sends the page's API token when one is typed) and polls its job to the end. The
 // picked map is shown as a horizontal plane at the centre height z of one voxel layer (the
 // slider), textured with GET …/maps/{map_id}/slice.png?z=… and placed exactly over the
 // map's bounds in x and y. The image's columns run along +x and its rows along +y (top row
@@ -18,6 +19,10 @@ export class ReachabilityPanel {
         <button id="map-refresh" type="button" title="List the maps again">↻</button></label>
       <label>Slice z <input id="map-layer" type="range" min="0" max="0" step="1" value="0">
         <output id="map-z"></output></label>
+      <label>Build: voxel <input id="map-voxel" type="number" value="0.1" min="0.02"
+        step="0.01" style="width: 4em"> m, samples <input id="map-samples" type="number"
+        value="20000" min="1000" step="1000" style="width: 6em">
+        <button id="map-build" type="button">Build</button></label>
       <p id="map-readout"></p>`;
     this.picker = document.getElementById('map-picker');
     this.layer = document.getElementById('map-layer');
@@ -40,6 +45,8 @@ export class ReachabilityPanel {
     this.lister = new Latest(() => this.listMaps(), report);
     this.slice = new Latest((map, layer) => this._slice(map, layer), report);
     document.getElementById('map-refresh').addEventListener('click', () => this.lister.request());
+    this.builder = new Latest(() => this.buildMap(), report);
+    document.getElementById('map-build').addEventListener('click', () => this.builder.request());
     this.picker.addEventListener('change', () => this.pick());
     this.layer.addEventListener('input', () => this.pick(Number(this.layer.value)));
   }
@@ -60,6 +67,30 @@ export class ReachabilityPanel {
       `${m.map_id.slice(0, 8)} (${m.frame}, ${m.voxel_size} m, ${m.shape.join('×')})`, m.map_id,
     )));
     this.picker.value = maps.some((m) => m.map_id === current) ? current : '';
+  }
+
+  // Build a map of the tip's positions (no orientation bins) and show it when done.
+  async buildMap() {
+    const v = this.viewer;
+    const robotId = v.detail.id;
+    const body = {
+      voxel_size: Number(document.getElementById('map-voxel').value),
+      samples: Number(document.getElementById('map-samples').value),
+      orientation_divisions: 0,
+      seed: 0,
+    };
+    let job = await v.api.post(v.path('/reachability'), body);
+    const jobPath = v.path(`/reachability/jobs/${encodeURIComponent(job.job_id)}`);
+    while (job.status === 'queued' || job.status === 'running') {
+      this.readout.textContent = `building: ${job.status}`;
+      await new Promise((resolve) => { setTimeout(resolve, 250); });
+      if (v.detail.id !== robotId) return; // another robot was picked meanwhile
+      job = await v.api.get(jobPath);
+    }
+    if (job.status !== 'done') throw new Error(`map build ${job.status}: ${job.error || ''}`);
+    await this.listMaps();
+    this.picker.value = job.map_id;
+    this.pick();
   }
 
   // Show the picked map at voxel layer `layer` (default: the middle one).
