@@ -49,6 +49,8 @@ def browser() -> Iterator[object]:
 def page(browser, live: Server, request: pytest.FixtureRequest) -> Iterator[Tab]:
     context = browser.new_context(viewport={"width": 1280, "height": 800})
     try:
-        yield Tab(context.new_page(), live.url, request.node.name)
+        tab = Tab(context.new_page(), live.url, request.node.name)
+        with tab.http:  # the test's own API client, closed with the page
+            yield tab
     finally:
         context.close()
