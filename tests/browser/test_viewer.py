@@ -15,8 +15,6 @@ import pytest
 
 from tests.browser.tools import (
     BENT,
-    READY,
-    WAIT_MS,
     Tab,
     api_fk,
     assert_same_pose,
@@ -57,7 +55,7 @@ def test_page_loads_robot_with_its_meshes_and_no_errors(page: Tab, robot_id: str
 
 def test_bare_viewer_opens_the_first_robot(page: Tab) -> None:
     page.goto("/viewer")
-    page.page.wait_for_function(READY, timeout=WAIT_MS)
+    wait_idle(page)
     first = page.http.get("/robots").json()["robots"][0]["id"]
     assert page.page.evaluate("denavit.viewer.detail.id") == first
     assert page.page.url.endswith(f"/viewer/{first}")
@@ -67,9 +65,7 @@ def test_bare_viewer_opens_the_first_robot(page: Tab) -> None:
 def test_picker_switches_robot(page: Tab) -> None:
     open_viewer(page, "panda")
     page.page.select_option("#robot-picker", "ur5")
-    page.page.wait_for_function(
-        "denavit.viewer.detail.id === 'ur5' && denavit.idle()", timeout=WAIT_MS
-    )
+    page.page.wait_for_function("denavit.viewer.detail.id === 'ur5' && denavit.idle()")
     ur5 = page.http.get("/robots/ur5").json()
     assert page_q(page) == ur5["neutral"]
     assert len(page.page.query_selector_all("#sliders input[type=range]")) == len(ur5["joints"])

@@ -11,7 +11,7 @@ import re
 
 import numpy as np
 
-from tests.browser.tools import READY, WAIT_MS, Tab, set_q
+from tests.browser.tools import Tab, set_q, wait_idle
 from tests.packages import panda_files, zip_bytes
 
 CUBE_OBJ = b"""o cube
@@ -74,7 +74,7 @@ def open_and_record(tab: Tab, robot_id: str) -> list[str]:
     paths: list[str] = []
     tab.page.on("request", lambda r: paths.append(r.url.split("://", 1)[1].split("/", 1)[1]))
     tab.goto(f"/viewer/{robot_id}")
-    tab.page.wait_for_function(READY, timeout=WAIT_MS)
+    wait_idle(tab)
     return paths
 
 

@@ -17,7 +17,6 @@ from PIL import Image
 
 from tests.browser.tools import (
     BENT,
-    WAIT_MS,
     Tab,
     api_fk,
     open_viewer,
@@ -258,7 +257,7 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
     page.page.click("#path-play")
     last = len(expected["points"]) - 1
     page.page.wait_for_function(
-        f"!denavit.panels.path.playing && denavit.panels.path.index === {last}", timeout=WAIT_MS
+        f"!denavit.panels.path.playing && denavit.panels.path.index === {last}"
     )
     wait_idle(page)
     q_end = expected["points"][-1]["q"]
