@@ -34,5 +34,5 @@ class LabelledStaticFiles(StaticFiles):
 def mount(app: FastAPI) -> None:
     """Serve :data:`STATIC_DIR` at :data:`STATIC_URL` (the route named ``static``)."""
     files = LabelledStaticFiles(directory=STATIC_DIR)
-    app.mount(STATIC_URL, files, name="static")
-    files.mount = next(r for r in app.routes if isinstance(r, Mount) and r.app is files)
+    files.mount = Mount(STATIC_URL, app=files, name="static")  # what app.mount() would add
+    app.router.routes.append(files.mount)

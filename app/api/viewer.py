@@ -4,7 +4,8 @@
 - GET /viewer/{robot_id}    the page on that robot (404 problem for an unknown id)
 - GET /static/...           its ES modules and styles (app/static/viewer) and the vendored
                             libraries (app/static/vendor: three.js, urdf-loader; see
-                            scripts/vendor_web.py), so that nothing is fetched from a CDN
+                            scripts/vendor_web.py), so that nothing is fetched from a CDN;
+                            mounted by :mod:`app.api.static_files`, not by this router
 
 The page is plain HTML and ES modules; it calls the API exactly as any client does (same
 JSON; a token field for the write routes when ``DENAVIT_API_TOKEN`` is set). None of these

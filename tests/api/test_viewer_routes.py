@@ -64,9 +64,8 @@ def test_every_module_the_page_loads_is_served(client) -> None:
     page = client.get("/viewer/panda").text
     importmap = json.loads(re.search(r'<script type="importmap">(.*?)</script>', page, re.S)[1])
     urls = set(re.findall(r'(?:src|href)="(/static/[^"]+)"', page))
-    prefixes = {}
-    for name, url in importmap["imports"].items():
-        (prefixes.__setitem__(name, url) if name.endswith("/") else urls.add(url))
+    prefixes = {name: url for name, url in importmap["imports"].items() if name.endswith("/")}
+    urls |= {url for name, url in importmap["imports"].items() if name not in prefixes}
     for module in VIEWER.glob("*.js"):
         for spec in _imports(module.read_text()):
             if spec.startswith("./"):

@@ -8,7 +8,8 @@ Fixtures (module scope: one live server and one browser per test module and xdis
   A missing browser fails the tests (``make browser`` installs it); it never skips them.
 - ``page``: a fresh context and page per test, wrapped in :class:`tests.browser.tools.Tab`,
   which records console errors, page errors and any request that would leave the machine
-  (such requests are aborted: the tests run as if offline).
+  (such requests are aborted: the tests run as if offline). Every Playwright wait and
+  action may take :data:`tests.browser.tools.WAIT_MS`.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.browser.tools import CHROMIUM_ARGS, Tab
+from tests.browser.tools import CHROMIUM_ARGS, WAIT_MS, Tab
 from tests.helpers import Server, serve
 
 
@@ -48,7 +49,10 @@ def browser() -> Iterator[object]:
 @pytest.fixture
 def page(browser, live: Server, request: pytest.FixtureRequest) -> Iterator[Tab]:
     context = browser.new_context(viewport={"width": 1280, "height": 800})
+    context.set_default_timeout(WAIT_MS)  # every wait and action: Chromium renders on the CPU
     try:
-        yield Tab(context.new_page(), live.url, request.node.name)
+        tab = Tab(context.new_page(), live.url, request.node.name)
+        with tab.http:  # the test's own API client, closed with the page
+            yield tab
     finally:
         context.close()

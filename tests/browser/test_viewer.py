@@ -15,8 +15,6 @@ import pytest
 
 from tests.browser.tools import (
     BENT,
-    READY,
-    WAIT_MS,
     Tab,
     api_fk,
     assert_same_pose,
@@ -57,7 +55,7 @@ def test_page_loads_robot_with_its_meshes_and_no_errors(page: Tab, robot_id: str
 
 def test_bare_viewer_opens_the_first_robot(page: Tab) -> None:
     page.goto("/viewer")
-    page.page.wait_for_function(READY, timeout=WAIT_MS)
+    wait_idle(page)
     first = page.http.get("/robots").json()["robots"][0]["id"]
     assert page.page.evaluate("denavit.viewer.detail.id") == first
     assert page.page.url.endswith(f"/viewer/{first}")
@@ -67,9 +65,7 @@ def test_bare_viewer_opens_the_first_robot(page: Tab) -> None:
 def test_picker_switches_robot(page: Tab) -> None:
     open_viewer(page, "panda")
     page.page.select_option("#robot-picker", "ur5")
-    page.page.wait_for_function(
-        "denavit.viewer.detail.id === 'ur5' && denavit.idle()", timeout=WAIT_MS
-    )
+    page.page.wait_for_function("denavit.viewer.detail.id === 'ur5' && denavit.idle()")
     ur5 = page.http.get("/robots/ur5").json()
     assert page_q(page) == ur5["neutral"]
     assert len(page.page.query_selector_all("#sliders input[type=range]")) == len(ur5["joints"])
@@ -142,29 +138,12 @@ def test_dragging_the_gizmo_solves_ik_to_the_new_target(
     moved = np.subtract(target["position"], start["position"])
     assert np.linalg.norm(moved) > 0.01, moved  # the drag moved the target
     assert abs(moved["XYZ".index(axis)]) == pytest.approx(np.linalg.norm(moved), rel=1e-9), moved
-    assert last["answer"]["success"], (
-        moved,
-        {
-            k: v
-            for k, v in last["answer"].items()
-            if k
-            in (
-                "status",
-                "reason",
-                "detail",
-                "iterations",
-                "restarts",
-                "position_error",
-                "solve_time_ms",
-            )
-        },
-    )
+    why = "status reason detail iterations restarts position_error solve_time_ms".split()
+    assert last["answer"]["success"], (moved, {k: last["answer"].get(k) for k in why})
     q = page_q(page)
     assert q == last["answer"]["q"]
     reached = api_fk(page, robot_id, q, tip)  # the API's FK of the page's configuration
-    np.testing.assert_allclose(reached["position"], target["position"], atol=1e-6)
-    rq, tq = np.array(reached["orientation"]), np.array(target["orientation"])
-    assert min(np.abs(rq - tq).max(), np.abs(rq + tq).max()) < 1e-6
+    assert_same_pose(reached, target, tol=1e-6)
     assert_same_pose(rendered_pose(page, tip), reached)
     # Seeded by the current configuration: the arm moved a little, on its branch.
     assert np.max(np.abs(np.subtract(q, q0))) < 0.5

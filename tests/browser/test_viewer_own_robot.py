@@ -11,7 +11,7 @@ import re
 
 import numpy as np
 
-from tests.browser.tools import READY, WAIT_MS, Tab, set_q
+from tests.browser.tools import Tab, api_fk, rendered_pose, set_q, wait_idle
 from tests.packages import panda_files, zip_bytes
 
 CUBE_OBJ = b"""o cube
@@ -74,7 +74,7 @@ def open_and_record(tab: Tab, robot_id: str) -> list[str]:
     paths: list[str] = []
     tab.page.on("request", lambda r: paths.append(r.url.split("://", 1)[1].split("/", 1)[1]))
     tab.goto(f"/viewer/{robot_id}")
-    tab.page.wait_for_function(READY, timeout=WAIT_MS)
+    wait_idle(tab)
     return paths
 
 
@@ -93,9 +93,8 @@ def test_own_panda_package_loads_its_meshes_from_the_files_route(page: Tab) -> N
     # Posed like the catalog's Panda: the same tip at the same configuration.
     q = [0.2, -0.4, 0.1, -2.0, 0.3, 1.9, 0.5, 0.01]
     set_q(page, q)
-    pose = page.page.evaluate("denavit.viewer.robot.framePose('panda_hand_tcp')")
-    body = {"q": q, "frames": ["panda_hand_tcp"]}
-    ref = page.http.post("/robots/panda/fk", json=body).json()["poses"]["panda_hand_tcp"]
+    pose = rendered_pose(page, "panda_hand_tcp")
+    ref = api_fk(page, "panda", q, "panda_hand_tcp")
     np.testing.assert_allclose(pose["position"], ref["position"], atol=1e-9)
     page.shot("own-panda")
     assert page.errors() == []

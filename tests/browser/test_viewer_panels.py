@@ -17,18 +17,19 @@ from PIL import Image
 
 from tests.browser.tools import (
     BENT,
-    WAIT_MS,
     Tab,
     api_fk,
     open_viewer,
+    page_q,
+    rendered_pose,
     set_q,
     wait_idle,
 )
 
 ROBOT = "panda"
 #: A bent, well-conditioned panda configuration (its neutral has joint 4 at a limit).
-PATH_OPTIONS = {"timeout_ms": 40, "max_iterations": 500, "random_seed": 0}
 PANDA_BENT = BENT[ROBOT]
+PATH_OPTIONS = {"timeout_ms": 40, "max_iterations": 500, "random_seed": 0}
 
 
 def quat_matrix(x: float, y: float, z: float, w: float) -> np.ndarray:
@@ -130,9 +131,7 @@ def test_collisions_highlight_the_links_the_api_reports(page: Tab) -> None:
 @pytest.mark.parametrize("robot_id", ["panda_dh", "so100"])
 def test_self_collision_highlights_both_links_of_each_pair(page: Tab, robot_id: str) -> None:
     """Both neutrals self-collide (a DH robot's generated URDF, a mesh robot's own)."""
-    page.goto(f"/viewer/{robot_id}")
-    wait_idle(page)
-    neutral = page.http.get(f"/robots/{robot_id}").json()["neutral"]
+    neutral = open_viewer(page, robot_id)["neutral"]
     api = page.http.post(f"/robots/{robot_id}/collisions", json={"q": neutral})
     assert api.status_code == 200, api.text
     hits = [p for p in api.json()["pairs"] if p["in_collision"]]
@@ -258,12 +257,12 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
     page.page.click("#path-play")
     last = len(expected["points"]) - 1
     page.page.wait_for_function(
-        f"!denavit.panels.path.playing && denavit.panels.path.index === {last}", timeout=WAIT_MS
+        f"!denavit.panels.path.playing && denavit.panels.path.index === {last}"
     )
     wait_idle(page)
     q_end = expected["points"][-1]["q"]
-    np.testing.assert_allclose(page.page.evaluate("denavit.viewer.q"), q_end, atol=1e-12)
-    drawn = page.page.evaluate("f => denavit.viewer.robot.framePose(f)", tip)
+    np.testing.assert_allclose(page_q(page), q_end, atol=1e-12)
+    drawn = rendered_pose(page, tip)
     fk = api_fk(page, ROBOT, q_end, tip)
     np.testing.assert_allclose(drawn["position"], fk["position"], atol=1e-9)
     np.testing.assert_allclose(
@@ -278,7 +277,7 @@ def test_path_plays_the_api_line_to_its_end(page: Tab) -> None:
         "#path-scrub", "e => { e.value = '0'; e.dispatchEvent(new Event('input')); }"
     )
     wait_idle(page)
-    assert page.page.evaluate("denavit.viewer.q") == PANDA_BENT
+    assert page_q(page) == PANDA_BENT
     assert page.errors() == []
 
 

@@ -11,7 +11,7 @@ from collections.abc import Iterator
 
 import pytest
 
-from tests.browser.tools import WAIT_MS, Tab, open_viewer, wait_idle
+from tests.browser.tools import Tab, open_viewer, wait_idle
 from tests.helpers import Server, serve
 
 TOKEN = "viewer-test-token-7f3a"
@@ -55,9 +55,7 @@ def test_writes_need_the_token_typed_into_the_page(page: Tab) -> None:
     page.page.fill("#token", TOKEN)
     page.page.dispatch_event("#token", "change")
     build_in_page(page)
-    page.page.wait_for_function(
-        "denavit.panels.reachability.shown !== null && denavit.idle()", timeout=WAIT_MS
-    )
+    page.page.wait_for_function("denavit.panels.reachability.shown !== null && denavit.idle()")
     maps = page.http.get("/robots/panda/reachability/maps").json()["maps"]
     assert len(maps) == 1
     assert page.page.evaluate("denavit.panels.reachability.shown.map_id") == maps[0]["map_id"]

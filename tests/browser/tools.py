@@ -39,6 +39,9 @@ CHROMIUM_ARGS = [
 
 MIN_PIXEL_STD = 8.0
 LOCAL_HOSTS = {"127.0.0.1", "localhost"}
+#: Playwright's timeout for every wait and action of a test page (the ``page`` fixture):
+#: generous, Chromium renders on the CPU and shares 2 cores with the server and other tests.
+WAIT_MS = 90_000
 
 
 def artifacts_dir() -> Path:
@@ -115,19 +118,18 @@ BENT = {
     "panda": [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.785, 0.0],
     "ur5": [0.3, -1.2, 1.4, -1.6, -1.5, 0.2],
 }
-READY = "window.denavit && window.denavit.idle()"
-WAIT_MS = 90_000
+
+
+def wait_idle(tab: Tab) -> None:
+    """Wait until the viewer is loaded and has no request in flight."""
+    tab.page.wait_for_function("window.denavit && window.denavit.idle()")
 
 
 def open_viewer(tab: Tab, robot_id: str) -> dict:
     """Open /viewer/{robot_id}, wait until loaded and idle; the robot's GET /robots/{id}."""
     tab.goto(f"/viewer/{robot_id}")
-    tab.page.wait_for_function(READY, timeout=WAIT_MS)
+    wait_idle(tab)
     return tab.http.get(f"/robots/{robot_id}").json()
-
-
-def wait_idle(tab: Tab) -> None:
-    tab.page.wait_for_function(READY, timeout=WAIT_MS)
 
 
 def set_q(tab: Tab, q: list[float]) -> None:
