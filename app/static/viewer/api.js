@@ -11,6 +11,9 @@ export class ApiError extends Error {
   }
 }
 
+// The path of robot `id`'s route `suffix` ('' for GET /robots/{id} itself).
+export const robotPath = (id, suffix = '') => `/robots/${encodeURIComponent(id)}${suffix}`;
+
 const tokenInput = () => document.getElementById('token');
 
 export function setupToken() {
@@ -40,5 +43,4 @@ async function call(method, path, body) {
 export const api = {
   get: (path) => call('GET', path),
   post: (path, body) => call('POST', path, body),
-  robot: (id) => (suffix = '') => `/robots/${encodeURIComponent(id)}${suffix}`,
 };

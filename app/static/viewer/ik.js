@@ -100,7 +100,6 @@ export class IkPanel {
     }
     this.marker.material.color.set(answer.success ? 0x1565c0 : 0xe02020);
     this.stage.render();
-    v.emit('ik', this.last);
   }
 
   // Several solutions for the tip's current pose, each with its branch; a click takes it.

@@ -69,6 +69,5 @@ export class JointsPanel {
       `${frame}\nposition  [${fmt(pose.position)}] m\n` +
       `orientation [${fmt(pose.orientation)}] (x, y, z, w)` +
       (answer.within_limits ? '' : `\noutside limits: ${answer.joints_outside_limits.join(', ')}`);
-    v.emit('fk', this.lastFk);
   }
 }

@@ -36,7 +36,7 @@ export class RobotView {
     return new Promise((resolve) => {
       const manager = new THREE.LoadingManager();
       const loader = new URDFLoader(manager);
-      const stats = { meshes: 0, loaded: 0, failed: 0, primitives: 0, errors: [] };
+      const stats = { meshes: 0, loaded: 0, failed: 0, primitives: 0 };
       let parsed = false;
       let robot = null;
       const finish = () => {
@@ -49,7 +49,6 @@ export class RobotView {
         const settle = (obj, err) => {
           if (err || !obj) {
             stats.failed += 1;
-            stats.errors.push(`${path}: ${err || 'no loader for this format'}`);
             console.warn(`mesh ${path} not loaded:`, err);
           } else {
             stats.loaded += 1;
