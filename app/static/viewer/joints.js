@@ -61,8 +61,8 @@ export class JointsPanel {
 
   async _fk(q, frame) {
     const v = this.viewer;
-    const answer = await v.api.post(v.path('/fk'), { q, frames: [frame] });
-    if (v.q.some((x, i) => x !== q[i]) && this.fk.next !== null) return; // stale
+    const answer = await v.ask('/fk', { q, frames: [frame] });
+    if (!answer || (v.q.some((x, i) => x !== q[i]) && this.fk.next !== null)) return; // stale
     const pose = answer.poses[frame];
     this.lastFk = { q, frame, pose };
     this.readout.textContent =

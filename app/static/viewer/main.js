@@ -27,6 +27,16 @@ class Viewer {
 
   path(suffix = '') { return robotPath(this.detail.id, suffix); }
 
+  // Call the shown robot's route `suffix`: GET, or POST when there is a body. Resolves to
+  // the API's answer, or to null when another robot was loaded before it came (the answer
+  // belongs to the old robot: the caller drops it).
+  async ask(suffix, body) {
+    const { detail } = this;
+    const url = this.path(suffix);
+    const answer = await (body === undefined ? api.get(url) : api.post(url, body));
+    return this.detail === detail ? answer : null;
+  }
+
   report(err) {
     this.status.textContent = err ? String(err.message || err) : '';
     this.status.classList.toggle('error', Boolean(err));

@@ -60,7 +60,9 @@ export class ReachabilityPanel {
   get map() { return this.maps.find((m) => m.map_id === this.picker.value) || null; }
 
   async listMaps() {
-    const { maps } = await this.viewer.api.get(this.viewer.path('/reachability/maps'));
+    const answer = await this.viewer.ask('/reachability/maps');
+    if (!answer) return; // another robot was loaded meanwhile
+    const { maps } = answer;
     const current = this.picker.value;
     this.maps = maps;
     this.picker.replaceChildren(new Option('none', ''), ...maps.map((m) => new Option(
@@ -79,7 +81,8 @@ export class ReachabilityPanel {
       orientation_divisions: 0,
       seed: 0,
     };
-    let job = await v.api.post(v.path('/reachability'), body);
+    let job = await v.ask('/reachability', body);
+    if (!job) return; // another robot was loaded meanwhile
     const jobPath = v.path(`/reachability/jobs/${encodeURIComponent(job.job_id)}`);
     while (job.status === 'queued' || job.status === 'running') {
       this.readout.textContent = `building: ${job.status}`;
