@@ -22,8 +22,9 @@ export function setupToken() {
   input.addEventListener('change', () => sessionStorage.setItem('denavit-token', input.value));
 }
 
-async function call(method, path, body) {
-  const headers = { Accept: 'application/json' };
+// `blob`: the answer's body as a Blob (an image), else parsed JSON (or text).
+async function call(method, path, body, blob = false) {
+  const headers = { Accept: blob ? '*/*' : 'application/json' };
   const token = tokenInput()?.value.trim();
   if (token) headers.Authorization = `Bearer ${token}`;
   if (body !== undefined) headers['Content-Type'] = 'application/json';
@@ -37,10 +38,12 @@ async function call(method, path, body) {
     const problem = type.includes('json') ? await resp.json().catch(() => null) : null;
     throw new ApiError(resp.status, problem);
   }
+  if (blob) return resp.blob();
   return type.includes('json') ? resp.json() : resp.text();
 }
 
 export const api = {
   get: (path) => call('GET', path),
   post: (path, body) => call('POST', path, body),
+  blob: (path) => call('GET', path, undefined, true),
 };
