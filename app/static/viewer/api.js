@@ -11,6 +11,9 @@ export class ApiError extends Error {
   }
 }
 
+// The path of robot `id`'s route `suffix` ('' for GET /robots/{id} itself).
+export const robotPath = (id, suffix = '') => `/robots/${encodeURIComponent(id)}${suffix}`;
+
 const tokenInput = () => document.getElementById('token');
 
 export function setupToken() {
@@ -19,8 +22,9 @@ export function setupToken() {
   input.addEventListener('change', () => sessionStorage.setItem('denavit-token', input.value));
 }
 
-async function call(method, path, body) {
-  const headers = { Accept: 'application/json' };
+// `blob`: the answer's body as a Blob (an image), else parsed JSON (or text).
+async function call(method, path, body, blob = false) {
+  const headers = { Accept: blob ? '*/*' : 'application/json' };
   const token = tokenInput()?.value.trim();
   if (token) headers.Authorization = `Bearer ${token}`;
   if (body !== undefined) headers['Content-Type'] = 'application/json';
@@ -34,11 +38,12 @@ async function call(method, path, body) {
     const problem = type.includes('json') ? await resp.json().catch(() => null) : null;
     throw new ApiError(resp.status, problem);
   }
+  if (blob) return resp.blob();
   return type.includes('json') ? resp.json() : resp.text();
 }
 
 export const api = {
   get: (path) => call('GET', path),
   post: (path, body) => call('POST', path, body),
-  robot: (id) => (suffix = '') => `/robots/${encodeURIComponent(id)}${suffix}`,
+  blob: (path) => call('GET', path, undefined, true),
 };

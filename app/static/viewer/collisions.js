@@ -112,8 +112,8 @@ export class CollisionsPanel {
   async _check(q, scene) {
     const v = this.viewer;
     const body = scene ? { q, scene } : { q };
-    const answer = await v.api.post(v.path('/collisions'), body);
-    if (!this.toggle.checked || this.check.next !== null) return; // off, or stale
+    const answer = await v.ask('/collisions', body);
+    if (!answer || !this.toggle.checked || this.check.next !== null) return; // stale, or off
     this.lastAnswer = { q, scene, answer };
     const hits = answer.pairs.filter((p) => p.in_collision);
     const links = new Set();

@@ -44,8 +44,8 @@ export class EllipsoidPanel {
 
   async _fetch(q, part) {
     const v = this.viewer;
-    const answer = await v.api.post(v.path('/manipulability'), { q, part });
-    if (!this.toggle.checked) return;
+    const answer = await v.ask('/manipulability', { q, part });
+    if (!answer || !this.toggle.checked) return; // another robot, or switched off
     this.last = { q, part, answer };
     const tip = v.robot.framePose(answer.frame);
     const { axes, half_lengths: lengths } = answer.velocity_ellipsoid;

@@ -86,7 +86,8 @@ export class IkPanel {
 
   async _solve(target) {
     const v = this.viewer;
-    const answer = await v.api.post(v.path('/ik'), { target, seed: v.q.slice(), timeout_ms: 50 });
+    const answer = await v.ask('/ik', { target, seed: v.q.slice(), timeout_ms: 50 });
+    if (!answer) return; // another robot was loaded meanwhile
     this.last = { target, answer };
     if (answer.success) {
       v.setQ(answer.q, 'ik');
@@ -100,19 +101,19 @@ export class IkPanel {
     }
     this.marker.material.color.set(answer.success ? 0x1565c0 : 0xe02020);
     this.stage.render();
-    v.emit('ik', this.last);
   }
 
   // Several solutions for the tip's current pose, each with its branch; a click takes it.
   async branches() {
     const v = this.viewer;
     const target = v.robot.framePose(v.detail.end_effector);
-    const answer = await v.api.post(v.path('/ik'), {
+    const answer = await v.ask('/ik', {
       target: { position: target.position, orientation: target.orientation },
       seed: v.q.slice(),
       num_solutions: 8,
       timeout_ms: 200,
     });
+    if (!answer) return; // another robot was loaded meanwhile
     const items = answer.solutions.map((s, i) => {
       const li = document.createElement('li');
       const button = document.createElement('button');

@@ -61,14 +61,13 @@ export class JointsPanel {
 
   async _fk(q, frame) {
     const v = this.viewer;
-    const answer = await v.api.post(v.path('/fk'), { q, frames: [frame] });
-    if (v.q.some((x, i) => x !== q[i]) && this.fk.next !== null) return; // stale
+    const answer = await v.ask('/fk', { q, frames: [frame] });
+    if (!answer || (v.q.some((x, i) => x !== q[i]) && this.fk.next !== null)) return; // stale
     const pose = answer.poses[frame];
     this.lastFk = { q, frame, pose };
     this.readout.textContent =
       `${frame}\nposition  [${fmt(pose.position)}] m\n` +
       `orientation [${fmt(pose.orientation)}] (x, y, z, w)` +
       (answer.within_limits ? '' : `\noutside limits: ${answer.joints_outside_limits.join(', ')}`);
-    v.emit('fk', this.lastFk);
   }
 }

@@ -2,7 +2,7 @@
 // a class with optional `build(detail)` (a robot was loaded) and `update(source)` (the
 // configuration changed; source: 'slider', 'ik', 'path', 'neutral', 'load', ...).
 // `window.denavit` exposes the state to the browser tests (tests/browser).
-import { api, setupToken } from './api.js';
+import { api, robotPath, setupToken } from './api.js';
 import { Stage } from './stage.js';
 import { RobotView } from './robot.js';
 import { Latest } from './latest.js';
@@ -21,17 +21,21 @@ class Viewer {
     this.robot = null;
     this.detail = null;
     this.q = [];
-    this.listeners = {};
     this.panels = [];
     this.ready = false;
-    this.loads = 0;
   }
 
-  on(event, fn) { (this.listeners[event] ||= []).push(fn); }
+  path(suffix = '') { return robotPath(this.detail.id, suffix); }
 
-  emit(event, payload) { (this.listeners[event] || []).forEach((fn) => fn(payload)); }
-
-  path(suffix = '') { return `/robots/${encodeURIComponent(this.detail.id)}${suffix}`; }
+  // Call the shown robot's route `suffix`: GET, or POST when there is a body. Resolves to
+  // the API's answer, or to null when another robot was loaded before it came (the answer
+  // belongs to the old robot: the caller drops it).
+  async ask(suffix, body) {
+    const { detail } = this;
+    const url = this.path(suffix);
+    const answer = await (body === undefined ? api.get(url) : api.post(url, body));
+    return this.detail === detail ? answer : null;
+  }
 
   report(err) {
     this.status.textContent = err ? String(err.message || err) : '';
@@ -52,8 +56,9 @@ class Viewer {
   async load(robotId) {
     this.ready = false;
     this.report(null);
-    const base = `/robots/${encodeURIComponent(robotId)}`;
-    const [detail, urdf] = await Promise.all([api.get(base), api.get(`${base}/urdf`)]);
+    const [detail, urdf] = await Promise.all([
+      api.get(robotPath(robotId)), api.get(robotPath(robotId, '/urdf')),
+    ]);
     const view = await RobotView.load(detail, urdf);
     if (this.robot) this.robot.dispose();
     this.robot = view;
@@ -65,7 +70,6 @@ class Viewer {
     this.setQ(detail.neutral.slice(), 'load');
     this.stage.frame(view.root);
     if (view.stats.failed) this.report(`${view.stats.failed} mesh(es) not loaded`);
-    this.loads += 1;
     this.ready = true;
   }
 
@@ -78,23 +82,21 @@ class Viewer {
 }
 
 const viewer = new Viewer();
-const joints = new JointsPanel(viewer);
-const ik = new IkPanel(viewer);
-const ellipsoid = new EllipsoidPanel(viewer);
-viewer.panels.push(joints, ik, ellipsoid);
-const collisions = new CollisionsPanel(viewer);
-const reachability = new ReachabilityPanel(viewer);
-const path = new PathPanel(viewer);
-viewer.panels.push(collisions, reachability, path);
+const panels = {
+  joints: new JointsPanel(viewer),
+  ik: new IkPanel(viewer),
+  ellipsoid: new EllipsoidPanel(viewer),
+  collisions: new CollisionsPanel(viewer),
+  reachability: new ReachabilityPanel(viewer),
+  path: new PathPanel(viewer),
+};
+viewer.panels.push(...Object.values(panels));
 
 // The tests' window on the viewer (read-only use; the page itself never reads it).
 window.denavit = {
   viewer,
-  panels: { joints, ik, ellipsoid, collisions, reachability, path },
-  get ready() { return viewer.ready; },
+  panels,
   idle: () => viewer.ready && Latest.pending === 0,
-  frames: () => viewer.stage.frames,
-  screenOf: (p) => viewer.stage.screenOf(p),
 };
 
 viewer.start().catch((err) => {

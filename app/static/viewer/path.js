@@ -88,8 +88,9 @@ export class PathPanel {
   async _plan(delta) {
     const v = this.viewer;
     const q = v.q.slice();
-    const { id, end_effector: frame } = v.detail;
-    const fk = await v.api.post(v.path('/fk'), { q, frames: [frame] });
+    const frame = v.detail.end_effector;
+    const fk = await v.ask('/fk', { q, frames: [frame] });
+    if (!fk) return; // another robot was loaded meanwhile
     const start = fk.poses[frame];
     const to = start.position.map((x, i) => x + delta[i]);
     const body = {
@@ -98,8 +99,8 @@ export class PathPanel {
       ...PATH_OPTIONS,
     };
     this.readout.textContent = 'planning…';
-    const answer = await v.api.post(v.path('/ik/path'), body);
-    if (v.detail.id !== id) return; // another robot was loaded meanwhile
+    const answer = await v.ask('/ik/path', body);
+    if (!answer) return; // another robot was loaded meanwhile
     this.lastRequest = body;
     this.lastAnswer = answer;
     this.line.geometry.dispose();

@@ -6,7 +6,6 @@
 // map's bounds in x and y. The image's columns run along +x and its rows along +y (top row
 // = largest y), as app/api/images.py slice_image draws them.
 import * as THREE from 'three';
-import { ApiError } from './api.js';
 import { Latest } from './latest.js';
 
 export class ReachabilityPanel {
@@ -60,7 +59,9 @@ export class ReachabilityPanel {
   get map() { return this.maps.find((m) => m.map_id === this.picker.value) || null; }
 
   async listMaps() {
-    const { maps } = await this.viewer.api.get(this.viewer.path('/reachability/maps'));
+    const answer = await this.viewer.ask('/reachability/maps');
+    if (!answer) return; // another robot was loaded meanwhile
+    const { maps } = answer;
     const current = this.picker.value;
     this.maps = maps;
     this.picker.replaceChildren(new Option('none', ''), ...maps.map((m) => new Option(
@@ -79,7 +80,8 @@ export class ReachabilityPanel {
       orientation_divisions: 0,
       seed: 0,
     };
-    let job = await v.api.post(v.path('/reachability'), body);
+    let job = await v.ask('/reachability', body);
+    if (!job) return; // another robot was loaded meanwhile
     const jobPath = v.path(`/reachability/jobs/${encodeURIComponent(job.job_id)}`);
     while (job.status === 'queued' || job.status === 'running') {
       this.readout.textContent = `building: ${job.status}`;
@@ -123,10 +125,9 @@ export class ReachabilityPanel {
     const url = this.viewer.path(
       `/reachability/maps/${encodeURIComponent(map.map_id)}/slice.png?z=${z}`,
     );
-    const resp = await fetch(url);
-    if (!resp.ok) throw new ApiError(resp.status, await resp.json().catch(() => null));
+    const png = await this.viewer.api.blob(url);
     // decoded bottom row first: with flipY off, texture v = 0 is the image's bottom (min y)
-    const image = await createImageBitmap(await resp.blob(), { imageOrientation: 'flipY' });
+    const image = await createImageBitmap(png, { imageOrientation: 'flipY' });
     if (this.map !== map || Number(this.layer.value) !== i) return; // stale
     const texture = new THREE.Texture(image);
     texture.flipY = false;

@@ -5,7 +5,8 @@ import * as THREE from 'three';
 import URDFLoader from 'urdf-loader';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 
-const HIGHLIGHT = new THREE.Color(0xe02020);
+// One material for every highlighted mesh (made once: a new one per check would leak).
+const HIGHLIGHT = new THREE.MeshPhongMaterial({ color: 0xe02020, emissive: 0x400000 });
 
 // Mesh URIs that start with files.uri_prefix are served at files.url + the rest.
 function rewriteMeshUris(urdf, files) {
@@ -36,7 +37,7 @@ export class RobotView {
     return new Promise((resolve) => {
       const manager = new THREE.LoadingManager();
       const loader = new URDFLoader(manager);
-      const stats = { meshes: 0, loaded: 0, failed: 0, primitives: 0, errors: [] };
+      const stats = { meshes: 0, loaded: 0, failed: 0, primitives: 0 };
       let parsed = false;
       let robot = null;
       const finish = () => {
@@ -49,7 +50,6 @@ export class RobotView {
         const settle = (obj, err) => {
           if (err || !obj) {
             stats.failed += 1;
-            stats.errors.push(`${path}: ${err || 'no loader for this format'}`);
             console.warn(`mesh ${path} not loaded:`, err);
           } else {
             stats.loaded += 1;
@@ -114,7 +114,7 @@ export class RobotView {
       link.traverse((o) => {
         if (!o.isMesh || ownerLink(o) !== link) return;
         this._highlighted.push([o, o.material]);
-        o.material = new THREE.MeshPhongMaterial({ color: HIGHLIGHT, emissive: 0x400000 });
+        o.material = HIGHLIGHT;
       });
     }
   }
@@ -125,12 +125,18 @@ export class RobotView {
     return this._highlighted.some(([mesh]) => ownerLink(mesh) === link);
   }
 
+  // Take the robot off the stage and free its GPU resources: geometries, materials (the
+  // URDF's and the meshes' own) and their textures.
   dispose() {
+    this.highlight([]);
     this.root.removeFromParent();
     this.root.traverse((o) => {
-      if (o.isMesh) {
-        o.geometry?.dispose();
-      }
+      if (!o.isMesh) return;
+      o.geometry?.dispose();
+      [o.material].flat().forEach((m) => {
+        Object.values(m).forEach((value) => { if (value?.isTexture) value.dispose(); });
+        m.dispose();
+      });
     });
   }
 }

@@ -36,7 +36,6 @@ export class Stage {
     this.scene.add(this.world);
     this.world.add(new THREE.AxesHelper(0.15));
 
-    this.frames = 0;
     this._pending = false;
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -59,7 +58,6 @@ export class Stage {
       this._pending = false;
       this.controls.update();
       this.renderer.render(this.scene, this.camera);
-      this.frames += 1;
     });
   }
 
