@@ -6,6 +6,10 @@ import * as THREE from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { Latest } from './latest.js';
 
+// An iteration cap ends a search (a few ms), the clock only backs it up: the same drag gives
+// the same answers on a busy machine, and an unreachable target fails fast.
+export const IK_OPTIONS = { timeout_ms: 500, max_iterations: 1000, random_seed: 0 };
+
 const fmt = (v, n = 4) => v.map((x) => x.toFixed(n)).join(', ');
 
 export class IkPanel {
@@ -86,7 +90,7 @@ export class IkPanel {
 
   async _solve(target) {
     const v = this.viewer;
-    const answer = await v.ask('/ik', { target, seed: v.q.slice(), timeout_ms: 50 });
+    const answer = await v.ask('/ik', { target, seed: v.q.slice(), ...IK_OPTIONS });
     if (!answer) return; // another robot was loaded meanwhile
     this.last = { target, answer };
     if (answer.success) {
