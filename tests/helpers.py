@@ -5,6 +5,7 @@
   ``--workers 2``, or ``python -m app``, the entry of ``make run`` and the image) on a free
   loopback port, stopped by its PID afterwards; :func:`make_app_with_a_bug` is a test-only
   application factory for it (``uvicorn --factory``).
+- :func:`poll_live`: GET a live server's job until a condition holds.
 - :func:`parse_metrics`: Prometheus text exposition → samples.
 - :func:`fk_target`: the wire IK target of a frame at a configuration (FK in the test).
 - :func:`write_routes`: the routes guarded by the write token.
@@ -220,6 +221,18 @@ def send_and_hang_up(url: str, path: str, body: dict) -> None:
     with socket.create_connection((parts.hostname, parts.port), timeout=10) as s:
         s.sendall(head + payload)
         time.sleep(0.2)  # let the server read it and hand it to the pool
+
+
+def poll_live(url: str, until, timeout: float = 60.0) -> dict:
+    """GET ``url`` until ``until(job)`` holds (60 s: a loaded machine is slow, never wrong)."""
+    end = time.monotonic() + timeout
+    while True:
+        r = httpx.get(url, timeout=10)
+        assert r.status_code == 200, r.text
+        if until(job := r.json()):
+            return job
+        assert time.monotonic() < end, job
+        time.sleep(0.05)
 
 
 def fk_target(registry, q, robot_id: str, frame: str) -> dict:

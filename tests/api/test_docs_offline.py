@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 from fastapi.testclient import TestClient
 
+from app.api.static_files import STATIC_DIR
 from app.main import create_app
 from tests.helpers import ROOT, parse_metrics, problem
 
@@ -28,7 +29,6 @@ TYPES = {
     ".png": "image/png",
     ".json": "application/json",
 }
-STATIC = ROOT / "app" / "static"
 
 
 def _type_of(url: str) -> str:
@@ -59,7 +59,7 @@ def test_every_asset_a_page_references_answers(client, page: str, expected: int)
         assert r.headers["content-type"].startswith(_type_of(url)), (url, r.headers)
         assert len(r.content) > 0, url
         if url.startswith("/static/"):  # the packaged file, byte for byte
-            assert r.content == (STATIC / url.removeprefix("/static/")).read_bytes(), url
+            assert r.content == (STATIC_DIR / url.removeprefix("/static/")).read_bytes(), url
 
 
 def test_swagger_ui_does_not_call_the_online_validator(client) -> None:
@@ -113,7 +113,7 @@ def test_static_serves_its_files_and_nothing_else(app, client) -> None:
     assert len([r for r in app.routes if getattr(r, "name", None) == "static"]) == 1
     r = client.get("/static/vendor/manifest.json")
     assert r.status_code == 200
-    assert r.content == (STATIC / "vendor" / "manifest.json").read_bytes()
+    assert r.content == (STATIC_DIR / "vendor" / "manifest.json").read_bytes()
     problem(client.get("/static/vendor/does-not-exist"), 404)
     problem(client.get("/static/vendor/"), 404)  # no directory listings
     problem(client.get("/static/%2e%2e/main.py"), 404)

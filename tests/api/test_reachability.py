@@ -16,7 +16,7 @@ from fastapi.testclient import TestClient
 from app.kinematics.models import RobotModel
 from app.main import create_app
 from app.settings import Settings
-from tests.helpers import serve
+from tests.helpers import poll_live, serve
 from tests.kinematics.chains import L1, L2, planar2_urdf
 
 ROBOT = "planar2_test"
@@ -486,18 +486,6 @@ def test_self_collision_build_over_http(client, app):
 
 def finished(job: dict) -> bool:
     return job["status"] not in ("queued", "running")
-
-
-def poll_live(url: str, until, timeout: float = 60.0) -> dict:
-    """GET ``url`` until ``until(job)`` holds (60 s: a loaded machine is slow, never wrong)."""
-    end = time.monotonic() + timeout
-    while True:
-        r = httpx.get(url, timeout=10)
-        assert r.status_code == 200, r.text
-        if until(job := r.json()):
-            return job
-        assert time.monotonic() < end, job
-        time.sleep(0.05)
 
 
 def test_two_server_processes_share_build_jobs(tmp_path):

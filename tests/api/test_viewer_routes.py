@@ -13,10 +13,10 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import ROOT, problem
+from app.api.static_files import STATIC_DIR
+from tests.helpers import problem
 
-STATIC = ROOT / "app" / "static"
-VIEWER = STATIC / "viewer"
+VIEWER = STATIC_DIR / "viewer"
 
 
 def test_viewer_page_starts_on_the_first_robot(client) -> None:
@@ -98,13 +98,13 @@ def test_static_files_refuse_traversal_and_unknown_files(client) -> None:
 
 
 def test_vendored_libraries_carry_licenses_and_their_manifest_files() -> None:
-    manifest = json.loads((STATIC / "vendor" / "manifest.json").read_text())
+    manifest = json.loads((STATIC_DIR / "vendor" / "manifest.json").read_text())
     names = {entry["name"] for entry in manifest["packages"]}
     assert names == {"three", "urdf-loader", "swagger-ui-dist", "redoc"}
     for entry in manifest["packages"]:
         assert re.fullmatch(r"\d+\.\d+\.\d+", entry["version"]), entry  # pinned
         assert entry["integrity"].startswith("sha512-")
-        folder = STATIC / "vendor" / entry["name"]
+        folder = STATIC_DIR / "vendor" / entry["name"]
         assert "LICENSE" in entry["files"]
         for rel in entry["files"]:
             assert (folder / rel).is_file(), (entry["name"], rel)

@@ -9,7 +9,6 @@ axes of obstacles, slice image orientation), not against the page's own numbers.
 from __future__ import annotations
 
 import io
-import time
 
 import numpy as np
 import pytest
@@ -25,6 +24,7 @@ from tests.browser.tools import (
     set_q,
     wait_idle,
 )
+from tests.helpers import poll_live
 
 ROBOT = "panda"
 #: A bent, well-conditioned panda configuration (its neutral has joint 4 at a limit).
@@ -158,12 +158,8 @@ def build_map(tab: Tab) -> dict:
         json={"voxel_size": 0.2, "samples": 3000, "orientation_divisions": 0, "seed": 1},
     )
     assert resp.status_code == 202, resp.text
-    job = resp.json()
-    for _ in range(1200):  # an iteration cap, not a time budget
-        if job["status"] not in ("queued", "running"):
-            break
-        time.sleep(0.1)
-        job = tab.http.get(resp.headers["location"]).json()
+    url = tab.url + resp.headers["location"]
+    job = poll_live(url, lambda j: j["status"] not in ("queued", "running"), timeout=120)
     assert job["status"] == "done", job
     return tab.http.get(f"/robots/{ROBOT}/reachability/maps/{job['map_id']}").json()
 
