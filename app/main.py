@@ -20,6 +20,7 @@ import logging
 import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
+from dataclasses import replace
 
 from fastapi import FastAPI
 from starlette.middleware.cors import CORSMiddleware
@@ -28,12 +29,15 @@ from app import api, openapi
 from app.api import docs_pages, errors, metrics, static_files, viewer
 from app.body_limit import BodyLimitMiddleware
 from app.documents.archive import ArchiveLimits
+from app.documents.limits import UploadLimits
+from app.documents.sandbox import PARSE_LIMITS
 from app.documents.urdf import UrdfLimits
 from app.documents.xacro import XacroLimits
 from app.guard import ErrorGuardMiddleware
 from app.kinematics import procwatch
 from app.kinematics.ik.compiled import warm_up as warm_up_ik
 from app.kinematics.ik_batch import shutdown_pool as stop_ik_batch_workers
+from app.kinematics.meshes import MeshLimits
 from app.kinematics.xmldoc import XmlLimits
 from app.logs import configure_logging
 from app.methods import MethodsMiddleware
@@ -92,6 +96,33 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     log.info("denavit stopped")
 
 
+def upload_limits(settings: Settings) -> UploadLimits:
+    """The bounds of an upload, from the ``DENAVIT_*`` settings."""
+    urdf = UrdfLimits(
+        xml=XmlLimits(
+            max_elements=settings.max_xml_elements,
+            max_attributes=settings.max_xml_attributes,
+            max_attributes_per_element=settings.max_xml_attributes_per_element,
+            max_depth=settings.max_xml_depth,
+        ),
+        max_joints=settings.max_urdf_joints,
+        max_dof=settings.max_robot_dof,
+    )
+    return UploadLimits(
+        urdf=urdf,
+        archive=ArchiveLimits(settings.max_package_files, settings.max_package_unpacked_bytes),
+        xacro=XacroLimits(
+            settings.xacro_timeout_s, settings.xacro_memory_bytes, settings.xacro_max_output_chars
+        ),
+        mesh=MeshLimits(settings.max_mesh_vertices, settings.max_collision_triangles),
+        parse=replace(
+            PARSE_LIMITS,
+            timeout_s=settings.parse_timeout_s,
+            memory_bytes=settings.parse_memory_bytes,
+        ),
+    )
+
+
 def create_app(settings: Settings | None = None) -> FastAPI:
     """Build the application (robots are loaded lazily, on first use)."""
     settings = settings or get_settings()
@@ -104,26 +135,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     app.state.settings = settings
-    limits = UrdfLimits(
-        xml=XmlLimits(
-            max_elements=settings.max_xml_elements,
-            max_attributes=settings.max_xml_attributes,
-            max_attributes_per_element=settings.max_xml_attributes_per_element,
-            max_depth=settings.max_xml_depth,
-        ),
-        max_joints=settings.max_urdf_joints,
-        max_dof=settings.max_robot_dof,
-    )
-    archive_limits = ArchiveLimits(
-        max_files=settings.max_package_files,
-        max_unpacked_bytes=settings.max_package_unpacked_bytes,
-    )
-    xacro_limits = XacroLimits(
-        timeout_s=settings.xacro_timeout_s,
-        memory_bytes=settings.xacro_memory_bytes,
-        max_output_chars=settings.xacro_max_output_chars,
-    )
-    app.state.registry = Registry(settings.data_dir, limits, archive_limits, xacro_limits)
+    app.state.registry = Registry(settings.data_dir, upload_limits(settings))
     errors.install(app)
     for router in api.ROUTERS:
         app.include_router(router)

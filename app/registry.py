@@ -28,17 +28,17 @@ from typing import BinaryIO
 import yaml
 
 from app.catalog import DH_EE_FRAME, erd_share_dir, load_catalog, load_dh_builtins
-from app.documents.archive import ArchiveLimits, unpack_archive
+from app.documents.archive import unpack_archive
 from app.documents.dh import MAX_DH_JOINTS, dh_error
+from app.documents.limits import UploadLimits
+from app.documents.mesh_check import check_meshes
 from app.documents.package import (
     CATALOG_PACKAGE,
     FILES_PREFIX,
     catalog_meshes,
     read_package,
 )
-from app.documents.urdf import UrdfLimits, build_checked_model, check_documents
-from app.documents.xacro import XacroLimits
-from app.kinematics.collision import collision_model
+from app.documents.urdf import build_checked_model, check_documents
 from app.kinematics.errors import (
     ConflictError,
     ForbiddenError,
@@ -46,7 +46,6 @@ from app.kinematics.errors import (
     KinematicsError,
     UnknownNameError,
 )
-from app.kinematics.meshes import check_mesh_files
 from app.kinematics.models import RobotModel, RobotSummary
 from app.kinematics.text import check_text
 from app.store import (
@@ -82,11 +81,8 @@ class Registry:
         ``<data_dir>/robots``. ``None``: built-in robots only (adding robots is refused).
         Creating a registry cleans what a crash may have left in the robots directory.
     limits
-        Bounds on the work an uploaded URDF may cause (``DENAVIT_MAX_XML_*``,
-        ``DENAVIT_MAX_URDF_JOINTS``, ``DENAVIT_MAX_ROBOT_DOF``); default :class:`UrdfLimits`.
-    archive_limits
-        Bounds on an uploaded package (``DENAVIT_MAX_PACKAGE_FILES``,
-        ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES``); default :class:`ArchiveLimits`.
+        Bounds on every upload (:class:`app.documents.limits.UploadLimits`: URDF work,
+        archives, xacro, meshes, the parsing child); the defaults when not given.
 
     A stored robot that cannot be read back (a record damaged on disk) is left out of the
     listing or answered with a 409 naming it, never a 500.
@@ -98,13 +94,9 @@ class Registry:
     def __init__(
         self,
         data_dir: Path | str | None = None,
-        limits: UrdfLimits | None = None,
-        archive_limits: ArchiveLimits | None = None,
-        xacro_limits: XacroLimits | None = None,
+        limits: UploadLimits | None = None,
     ) -> None:
-        self.limits = limits or UrdfLimits()
-        self.archive_limits = archive_limits or ArchiveLimits()
-        self.xacro_limits = xacro_limits or XacroLimits()
+        self.limits = limits or UploadLimits()
         self.catalog = load_catalog()
         self.dh_builtin = load_dh_builtins(exclude=self.catalog)
         self.store = RobotStore(Path(data_dir) / "robots") if data_dir is not None else None
@@ -223,12 +215,12 @@ class Registry:
             if urdf is None:  # deleted by another process since the listing
                 raise UnknownNameError("robot", stored.id, "robot_id", self.ids())
             srdf = stored.read_text(SRDF_FILE)
-            check_documents(urdf, srdf, self.limits)
+            check_documents(urdf, srdf, self.limits.urdf)
             meta = stored.meta
             dirs = [str(erd_share_dir())]
             if (stored.path / PACKAGE_DIR).is_dir():
                 dirs.insert(0, str(stored.path))  # package://files/... → <robot>/files/...
-            return RobotModel(
+            robot = RobotModel(
                 stored.id,
                 urdf,
                 name=meta.get("name") or stored.id,
@@ -238,6 +230,8 @@ class Registry:
                 ee_frame=meta.get("ee_frame"),
                 description=meta.get("description") or "",
             )
+            robot.mesh_limits = self.limits.mesh  # checked again before a mesh is loaded
+            return robot
         except UnknownNameError as exc:
             if exc.field == "robot_id":
                 raise
@@ -371,7 +365,7 @@ class Registry:
         check_text(description, "description")
         if ee_frame is not None:
             check_text(ee_frame, "ee_frame")
-        root = check_documents(urdf, srdf, self.limits)
+        root = check_documents(urdf, srdf, self.limits.urdf)
         meshes = catalog_meshes(root, erd_share_dir(), "urdf")
         robot = build_checked_model(
             robot_id,
@@ -382,7 +376,9 @@ class Registry:
             description=description,
             package_dirs=[str(erd_share_dir())],
         )
-        check_mesh_files(meshes, "urdf")
+        dirs = [str(erd_share_dir())]
+        check_meshes(urdf, meshes, dirs, self.limits.mesh, self.limits.parse, "urdf")
+        robot.mesh_limits = self.limits.mesh
         meta = {
             "name": robot_id,
             "source": "upload",
@@ -410,9 +406,12 @@ class Registry:
 
         The archive is unpacked within :attr:`archive_limits` into a staging directory of
         the store (:func:`app.documents.archive.unpack_archive`), its description read and
-        its file references resolved inside it (:func:`app.documents.package.read_package`),
-        the URDF checked like an uploaded one, and every mesh loaded; only then is the
-        robot stored, with the package's files. Any refusal leaves nothing behind.
+        its file references resolved inside it, every mesh header checked
+        (:func:`app.documents.package.read_package`; xacro and MJCF in bounded children),
+        the URDF checked like an uploaded one, and every mesh loaded and the collision
+        geometry built in a bounded child (:func:`app.documents.mesh_check.check_meshes`);
+        only then is the robot stored, with the package's files. Nothing is parsed by a
+        mesh loader in this process. Any refusal leaves nothing behind.
         """
         store = self._writable(robot_id, "name")
         check_text(description, "description")
@@ -421,17 +420,16 @@ class Registry:
         with store.staging() as staging:
             files_dir = staging / PACKAGE_DIR
             files_dir.mkdir()
-            unpack_archive(archive, files_dir, self.archive_limits)
+            unpack_archive(archive, files_dir, self.limits.archive)
             package = read_package(
                 files_dir,
                 description_path,
                 srdf=srdf_path,
                 xacro_args=xacro_args or {},
                 catalog=erd_share_dir(),
-                limits=self.limits.xml,
-                xacro_limits=self.xacro_limits,
+                limits=self.limits,
             )
-            check_documents(package.urdf, package.srdf, self.limits, "description")
+            check_documents(package.urdf, package.srdf, self.limits.urdf, "description")
             robot = build_checked_model(
                 robot_id,
                 package.urdf,
@@ -442,9 +440,11 @@ class Registry:
                 package_dirs=[str(staging), str(erd_share_dir())],
                 urdf_field="description",
             )
-            check_mesh_files(package.meshes, "archive")
-            collision_model(robot)  # built (meshes in memory) before anything is stored
+            dirs = [str(staging), str(erd_share_dir())]
+            limits = self.limits
+            check_meshes(package.urdf, package.meshes, dirs, limits.mesh, limits.parse, "archive")
             robot.package_dirs = [str(store.root / robot_id), str(erd_share_dir())]
+            robot.mesh_limits = self.limits.mesh
             meta = {
                 "name": robot_id,
                 "source": "package",

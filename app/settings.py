@@ -100,6 +100,40 @@ class Settings(BaseSettings):
     xacro_max_output_chars: int = Field(
         8 * 1024 * 1024, ge=1024, description="Longest URDF a xacro expansion may produce."
     )
+    max_mesh_vertices: int = Field(
+        1_000_000,
+        ge=1000,
+        description="Most vertices, and most faces, one mesh file of an upload may declare "
+        "(read from its header before any mesh loader sees it).",
+    )
+    max_collision_triangles: int = Field(
+        200_000,
+        ge=1000,
+        description="Most triangles of one uploaded robot's collision meshes, in total and per "
+        "file: each worker holds them (~0.7 KB each) and builds them mesh by mesh while "
+        "holding the GIL (~5-10 µs per triangle).",
+    )
+    parse_timeout_s: float = Field(
+        60.0,
+        gt=0,
+        le=3600,
+        allow_inf_nan=False,
+        description="Wall-clock limit of the child process that reads an upload's meshes or "
+        "converts its MJCF (it is killed).",
+    )
+    parse_memory_bytes: int = Field(
+        1024 * 1024 * 1024,
+        ge=64 * 1024 * 1024,
+        description="Address space the child process that reads an upload's meshes or converts "
+        "its MJCF may add (RLIMIT_AS).",
+    )
+    upload_workers: int = Field(
+        2,
+        ge=1,
+        le=64,
+        description="Threads of one worker for robot uploads (DH, URDF, packages: unpacking, "
+        "checks, waiting on their child processes); never the compute pool's.",
+    )
     ik_max_request_s: float = Field(
         30.0,
         gt=0,

@@ -68,10 +68,11 @@ def free_port() -> int:
 
 
 class Server:
-    """A live server process: its base URL, process and log file (stderr and stdout)."""
+    """A live server process: its base URL, process, log file (stderr and stdout) and data
+    directory."""
 
-    def __init__(self, proc: subprocess.Popen[bytes], url: str, log: Path) -> None:
-        self.proc, self.url, self.log = proc, url, log
+    def __init__(self, proc: subprocess.Popen[bytes], url: str, log: Path, data_dir: Path) -> None:
+        self.proc, self.url, self.log, self.data_dir = proc, url, log, data_dir
 
     def log_lines(self) -> list[dict]:
         """The JSON lines logged so far (other lines skipped)."""
@@ -143,7 +144,7 @@ def serve(
             if time.monotonic() > deadline:
                 raise RuntimeError(f"server did not start: {log_path.read_text()[-3000:]}")
             time.sleep(0.1)
-        yield Server(proc, url, log_path)
+        yield Server(proc, url, log_path, Path(data_dir))
     finally:
         if proc.poll() is None:
             proc.terminate()
@@ -152,6 +153,27 @@ def serve(
             except subprocess.TimeoutExpired:
                 proc.kill()
                 proc.wait()
+
+
+def worker_pids(server: Server) -> list[int]:
+    """The PIDs of a multi-worker server's uvicorn workers (the supervisor's children that
+    run the app; not multiprocessing's resource tracker), sorted."""
+    pids = []
+    for pid in descendants(server.proc.pid):
+        stat = proc_stat(pid)
+        try:
+            cmdline = Path(f"/proc/{pid}/cmdline").read_bytes()
+        except OSError:
+            continue
+        if stat is not None and stat[1] == server.proc.pid and b"resource_tracker" not in cmdline:
+            pids.append(pid)
+    return sorted(pids)
+
+
+def worker_rss_mb(pid: int) -> float:
+    """Resident memory of process ``pid`` (MiB), from /proc/<pid>/status."""
+    status = Path(f"/proc/{pid}/status").read_text()
+    return int(status.split("VmRSS:")[1].split()[0]) / 1024
 
 
 def make_app_with_a_bug() -> FastAPI:

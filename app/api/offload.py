@@ -1,8 +1,11 @@
-"""Work off the event loop: the bounded pool, and cancelling work whose client has left.
+"""Work off the event loop: two bounded pools, and cancelling work whose client has left.
 
 The event loop serves sub-millisecond endpoints and /health; anything longer (IK with big
-budgets, batches, reachability) runs in one bounded pool (:func:`offload`), and long work
-stops when its client disconnects (:func:`offload_cancellable`).
+budgets, batches, reachability) runs in the compute pool (:func:`offload`), and long work
+stops when its client disconnects (:func:`offload_cancellable`). Robot uploads (DH tables,
+URDF, packages: unpacking, checks, waiting on their xacro, MJCF and mesh child processes)
+run in a pool of their own (:func:`offload_upload`, ``DENAVIT_UPLOAD_WORKERS`` threads),
+so however many slow uploads are in flight, a compute request never waits for one.
 """
 
 from __future__ import annotations
@@ -38,11 +41,37 @@ def pool() -> ThreadPoolExecutor:
     return _POOL
 
 
-async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
-    """Run ``fn(*args, **kwargs)`` in the bounded pool and await its result."""
+_UPLOAD_POOLS: dict[int, ThreadPoolExecutor] = {}
+_UPLOAD_LOCK = threading.Lock()
+
+
+def upload_pool(workers: int) -> ThreadPoolExecutor:
+    """The bounded pool of robot uploads (``workers`` threads, ``DENAVIT_UPLOAD_WORKERS``);
+    never the compute pool, whose threads stay free for compute requests."""
+    with _UPLOAD_LOCK:
+        executor = _UPLOAD_POOLS.get(workers)
+        if executor is None:
+            executor = _UPLOAD_POOLS[workers] = ThreadPoolExecutor(
+                max_workers=workers, thread_name_prefix="upload"
+            )
+        return executor
+
+
+async def _run_in(executor: ThreadPoolExecutor, fn: Callable[..., T], *args: Any, **kw: Any) -> T:
     loop = asyncio.get_running_loop()
     context = contextvars.copy_context()  # the request id follows into the pool's logs
-    return await loop.run_in_executor(pool(), context.run, functools.partial(fn, *args, **kwargs))
+    return await loop.run_in_executor(executor, context.run, functools.partial(fn, *args, **kw))
+
+
+async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    """Run ``fn(*args, **kwargs)`` in the bounded compute pool and await its result."""
+    return await _run_in(pool(), fn, *args, **kwargs)
+
+
+async def offload_upload(request: Request, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    """Run the upload ``fn(*args, **kwargs)`` in the upload pool and await its result."""
+    workers = request.app.state.settings.upload_workers
+    return await _run_in(upload_pool(workers), fn, *args, **kwargs)
 
 
 #: How often (s) a request whose work runs in the pool checks that its client is still there.

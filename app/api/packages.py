@@ -19,7 +19,7 @@ from starlette.responses import FileResponse, Response
 from app.api.body import body_schema, read_capped, validate_body
 from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, problem
-from app.api.offload import offload
+from app.api.offload import offload_upload
 from app.api.robots import _WRITE_ERRORS, RobotDetail, _created, robot_detail
 from app.api.schemas import RobotId, Schema, Text
 from app.api.security import require_token
@@ -194,7 +194,7 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
         parsed = validate_body(_PackageForm, fields)
         if archive is None:
             raise InvalidInputError("the archive file is required", "archive")
-        return _created(await offload(_add_package, reg, parsed, archive.file))
+        return _created(await offload_upload(request, _add_package, reg, parsed, archive.file))
     finally:
         await form.close()
 

@@ -20,7 +20,7 @@ from starlette.responses import Response
 from app.api.body import body_schema, decode_body, read_capped
 from app.api.deps import RegistryDep
 from app.api.errors import ERROR_RESPONSES, MalformedBodyError, Problem, problem
-from app.api.offload import offload
+from app.api.offload import offload_upload
 from app.api.responses import ORJSONResponse
 from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
@@ -344,7 +344,7 @@ async def import_dh_robot(request: Request, reg: RegistryDep) -> Response:
         text = body.decode("utf-8-sig")  # a leading BOM is dropped
     except UnicodeDecodeError as exc:
         raise MalformedBodyError(f"body: not UTF-8 text ({exc.reason})") from None
-    return _created(await offload(_import_dh, reg, text, fmt))
+    return _created(await offload_upload(request, _import_dh, reg, text, fmt))
 
 
 @router.post(
@@ -374,7 +374,7 @@ async def upload_urdf_robot(request: Request, reg: RegistryDep) -> Response:
     if isinstance(body, Response):
         return body
     upload, _ = decode_body(body, UrdfUpload)
-    return _created(await offload(_add_urdf, reg, upload))
+    return _created(await offload_upload(request, _add_urdf, reg, upload))
 
 
 @router.delete(

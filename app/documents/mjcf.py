@@ -1,27 +1,19 @@
 """Reading a client's MJCF (MuJoCo) arm into URDF text, confined to its package.
 
-The document and its ``<include>``s are first read with
-:func:`app.kinematics.xmldoc.parse_literal_xml` (the upload's XML limits): every ``file``
-(include, mesh, skin, hfield, texture) and every ``<compiler meshdir/assetdir/texturedir>``
-must resolve (symlinks followed) inside the package, and joints whose type is not
-``hinge`` or ``slide`` (``ball``, ``free``, ``<freejoint>``) are refused naming the joint.
-Pinocchio's MJCF parser then builds the model (``pin.buildModelFromMJCF``) and its
-collision and visual geometry (``pin.buildGeomFromMJCF``), and the URDF is written from
-that model:
-
-- one link per MJCF body (its name), plus a root link ``world`` (the worldbody) and, for
-  a joint that is not at its body's origin (``<joint pos>``), a link ``<joint>_link`` at
-  the joint frame, fixed to the body's link;
-- hinge → ``revolute`` with ``<limit>`` (its range) or, unlimited, ``continuous``;
-  slide → ``prismatic`` (an unlimited slide is refused: URDF needs its limits);
-  axes as Pinocchio normalised them; origins as ``xyz`` and ``rpy`` of Pinocchio's
-  placements, written with ``repr`` (full precision);
-- each joint's inertia (Pinocchio's: the bodies it moves, fixed ones included) on the
-  joint's link, expressed in its frame;
-- geometry as ``<collision>`` (geoms that collide) and ``<visual>`` (all): box, sphere,
-  cylinder, capsule (as a cylinder and two spheres: urdfdom reads no capsule), and meshes
-  by file name relative to the description's directory with their scale; planes,
-  ellipsoids and height fields are left out.
+In the worker, the document and its ``<include>``s are first read with
+:func:`app.kinematics.xmldoc.parse_literal_xml` (the upload's XML limits): every file
+attribute (``file`` of include, mesh, skin, hfield, texture, model; a cube texture's
+``fileright``, ``fileleft``, ``fileup``, ``filedown``, ``filefront``, ``fileback``) and
+every ``<compiler meshdir/assetdir/texturedir>`` must resolve (symlinks followed) inside the
+package, joints whose type is not ``hinge`` or ``slide`` (``ball``, ``free``,
+``<freejoint>``) are refused naming the joint, the merged model (includes in place) may
+nest no deeper than ``DENAVIT_MAX_XML_DEPTH`` and hold no more bodies than
+``DENAVIT_MAX_URDF_JOINTS``, and each mesh is checked by the caller (its header and the
+files it names) before any loader sees it. Then, in a bounded child process
+(:mod:`app.documents.sandbox`, task ``mjcf``: :func:`convert_in_child`), Pinocchio's MJCF
+parser builds the model (``pin.buildModelFromMJCF``) and its collision and visual geometry
+(``pin.buildGeomFromMJCF``), and the URDF is written from that model
+(:mod:`app.documents.mjcf_urdf`).
 """
 
 from __future__ import annotations
@@ -29,12 +21,14 @@ from __future__ import annotations
 import math
 import os
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 from xml.etree.ElementTree import Element, tostring
 
 import numpy as np
 import pinocchio as pin
 
+from app.documents.sandbox import PARSE_LIMITS, ChildLimits, run_child
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
@@ -42,15 +36,6 @@ FIELD = "description"
 #: Most files an MJCF document may pull in with ``<include>``.
 MAX_INCLUDES = 64
 _SUPPORTED = {"hinge", "slide"}
-_SHORTNAME_TYPES = {
-    "JointModelFreeFlyer": "free",
-    "JointModelSpherical": "ball",
-    "JointModelSphericalZYX": "ball",
-    "JointModelComposite": "several joints in one body",
-    "JointModelPlanar": "planar",
-}
-_REVOLUTE = {"JointModelRX": (1, 0, 0), "JointModelRY": (0, 1, 0), "JointModelRZ": (0, 0, 1)}
-_PRISMATIC = {"JointModelPX": (1, 0, 0), "JointModelPY": (0, 1, 0), "JointModelPZ": (0, 0, 1)}
 
 
 def _inside(root: Path, path: Path) -> bool:
@@ -191,11 +176,11 @@ def check_mjcf_files(root: Path, description: str, limits: XmlLimits) -> tuple[P
             if compiler.get(attr) is not None:
                 dirs[attr] = _resolve(root, base, compiler.get(attr, ""), f"<compiler {attr}>")
     for element in tree.iter():
-        value = element.get("file")
-        if value is None:
-            continue
         key = "texturedir" if element.tag == "texture" else "meshdir"
-        _resolve(root, dirs.get(key, dirs.get("assetdir", base)), value, f"<{element.tag} file>")
+        for attr, value in element.attrib.items():
+            if attr.startswith("file"):
+                folder = dirs.get(key, dirs.get("assetdir", base))
+                _resolve(root, folder, value, f"<{element.tag} {attr}>")
     if not compilers:
         compilers = [Element("compiler")]
         tree.insert(0, compilers[0])
@@ -254,219 +239,85 @@ def root_body_pose(tree: Element) -> pin.SE3:
     return pin.SE3(rotation, np.array(pos))
 
 
-def _num(x: float) -> str:
-    if not math.isfinite(x):
-        raise InvalidInputError(f"the model has a non-finite value ({x!r})", FIELD)
-    return repr(float(x)) if x != 0 else "0.0"
+def _depth(tree: Element) -> int:
+    """How deep ``tree`` nests (the root is 1), without recursion."""
+    deepest, todo = 0, [(tree, 1)]
+    while todo:
+        element, depth = todo.pop()
+        deepest = max(deepest, depth)
+        todo.extend((child, depth + 1) for child in element)
+    return deepest
 
 
-def _origin(m: pin.SE3) -> str:
-    xyz = " ".join(_num(v) for v in m.translation)
-    rpy = " ".join(_num(v) for v in pin.rpy.matrixToRpy(m.rotation))
-    return f'<origin xyz="{xyz}" rpy="{rpy}"/>'
+def mesh_files(tree: Element) -> list[tuple[str, Path]]:
+    """``(file attribute, real path)`` of every ``<mesh>`` asset of a checked tree (its
+    ``meshdir`` made absolute by :func:`check_mjcf_files`)."""
+    meshdir = next((c.get("meshdir") for c in tree.iter("compiler") if c.get("meshdir")), "")
+    return [
+        (m.get("file", ""), Path(os.path.realpath(Path(meshdir) / m.get("file", ""))))
+        for m in tree.iter("mesh")
+        if m.get("file")
+    ]
 
 
-def _unique(name: str, taken: set[str]) -> str:
-    while name in taken:
-        name += "_"
-    taken.add(name)
-    return name
-
-
-def _geometry(obj: pin.GeometryObject, base: Path) -> str | None:
-    """URDF ``<geometry>`` of a Pinocchio geometry object, or ``None`` if URDF has none."""
-    g = obj.geometry
-    kind = type(g).__name__
-    if kind == "Box":
-        return f'<box size="{" ".join(_num(2 * v) for v in g.halfSide)}"/>'
-    if kind == "Sphere":
-        return f'<sphere radius="{_num(g.radius)}"/>'
-    if kind == "Cylinder":
-        return f'<cylinder radius="{_num(g.radius)}" length="{_num(2 * g.halfLength)}"/>'
-    if obj.meshPath and kind.startswith(("BVHModel", "Convex")):
-        name = Path(os.path.relpath(os.path.realpath(obj.meshPath), base)).as_posix()
-        scale = " ".join(_num(v) for v in obj.meshScale)
-        return f'<mesh filename="{_xml(name)}" scale="{scale}"/>'
-    return None
-
-
-def _shapes(obj: pin.GeometryObject, placement: pin.SE3, base: Path) -> list[tuple[str, pin.SE3]]:
-    """URDF geometries (with their origins in the link) of one geometry object: a capsule
-    (which urdfdom does not read) is a cylinder and two spheres, exactly its volume."""
-    g = obj.geometry
-    if type(g).__name__ == "Capsule":
-        r, h = _num(g.radius), g.halfLength
-        ends = [placement * pin.SE3(np.eye(3), np.array([0.0, 0.0, z])) for z in (h, -h)]
-        return [(f'<cylinder radius="{r}" length="{_num(2 * h)}"/>', placement)] + [
-            (f'<sphere radius="{r}"/>', end) for end in ends
-        ]
-    geometry = _geometry(obj, base)
-    return [] if geometry is None else [(geometry, placement)]
-
-
-def _xml(text: str) -> str:
-    return (
-        text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
-    )
-
-
-def _joint_xml(model: pin.Model, j: int, parent: str, child: str, origin: pin.SE3) -> str:
-    joint = model.joints[j]
-    short = joint.shortname()
-    name = model.names[j]
-    if short in _REVOLUTE or short == "JointModelRevoluteUnaligned":
-        axis = _REVOLUTE.get(short) or tuple(joint.extract().axis)
-        revolute = True
-    elif short in _PRISMATIC or short == "JointModelPrismaticUnaligned":
-        axis = _PRISMATIC.get(short) or tuple(joint.extract().axis)
-        revolute = False
-    else:
-        mjcf_type = _SHORTNAME_TYPES.get(short, short)
-        raise InvalidInputError(
-            f"joint {name!r} of type {mjcf_type!r} is not supported (hinge and slide only)", FIELD
-        )
-    i = joint.idx_q
-    lower, upper = model.lowerPositionLimit[i], model.upperPositionLimit[i]
-    limited = math.isfinite(lower) and math.isfinite(upper)
-    if not limited and not revolute:
-        raise InvalidInputError(f"slide joint {name!r} needs a range (URDF needs limits)", FIELD)
-    jtype = ("revolute" if limited else "continuous") if revolute else "prismatic"
-    effort = model.effortLimit[joint.idx_v]
-    velocity = model.velocityLimit[joint.idx_v]
-    effort = effort if math.isfinite(effort) else 1e6
-    velocity = velocity if math.isfinite(velocity) else 1e6
-    limit = f'<limit effort="{_num(effort)}" velocity="{_num(velocity)}"'
-    limit += f' lower="{_num(lower)}" upper="{_num(upper)}"/>' if limited else "/>"
-    return (
-        f'  <joint name="{_xml(name)}" type="{jtype}">\n'
-        f'    <parent link="{_xml(parent)}"/>\n    <child link="{_xml(child)}"/>\n'
-        f"    {_origin(origin)}\n"
-        f'    <axis xyz="{" ".join(_num(v) for v in axis)}"/>\n    {limit}\n  </joint>\n'
-    )
-
-
-def _fixed_xml(name: str, parent: str, child: str, origin: pin.SE3) -> str:
-    return (
-        f'  <joint name="{_xml(name)}" type="fixed">\n'
-        f'    <parent link="{_xml(parent)}"/>\n    <child link="{_xml(child)}"/>\n'
-        f"    {_origin(origin)}\n  </joint>\n"
-    )
-
-
-def _inertial_xml(inertia: pin.Inertia) -> str:
-    if inertia.mass == 0.0 and not np.any(inertia.inertia):
-        return ""
-    i = inertia.inertia
-    values = " ".join(
-        f'{k}="{_num(v)}"'
-        for k, v in (
-            ("ixx", i[0, 0]),
-            ("ixy", i[0, 1]),
-            ("ixz", i[0, 2]),
-            ("iyy", i[1, 1]),
-            ("iyz", i[1, 2]),
-            ("izz", i[2, 2]),
-        )
-    )
-    lever = " ".join(_num(v) for v in inertia.lever)
-    return (
-        f'    <inertial>\n      <origin xyz="{lever}" rpy="0.0 0.0 0.0"/>\n'
-        f'      <mass value="{_num(inertia.mass)}"/>\n      <inertia {values}/>\n    </inertial>\n'
-    )
-
-
-def mjcf_to_urdf(root: Path, description: str, limits: XmlLimits) -> str:
+def mjcf_to_urdf(
+    root: Path,
+    description: str,
+    limits: XmlLimits,
+    *,
+    max_bodies: int = 256,
+    child: ChildLimits = PARSE_LIMITS,
+    check_mesh: Callable[[str, Path], None] | None = None,
+) -> str:
     """URDF text equivalent to the MJCF file ``root / description``.
+
+    Parameters
+    ----------
+    root, description
+        The package, and the path of the MJCF file in it.
+    limits, max_bodies
+        XML bounds (the merged model's depth included); most bodies
+        (``DENAVIT_MAX_URDF_JOINTS``).
+    child
+        Bounds on the child process that runs Pinocchio's parser.
+    check_mesh
+        Called as ``check_mesh(name, path)`` for every mesh asset before any loader sees
+        one (the package's header and reference checks).
 
     Mesh ``filename``s in the result are paths relative to the description's directory.
     Raises :class:`~app.kinematics.errors.InvalidInputError` (field ``description``; a
     joint that is not a hinge or slide names the joint and its type).
     """
     main, tree = check_mjcf_files(root, description, limits)
+    depth = _depth(tree)
+    if depth > limits.max_depth:
+        raise InvalidInputError(
+            f"the model with its includes nests {depth} levels deep, deeper than "
+            f"{limits.max_depth} (DENAVIT_MAX_XML_DEPTH)",
+            FIELD,
+        )
+    bodies = sum(1 for _ in tree.iter("body"))
+    if bodies > max_bodies:
+        raise InvalidInputError(
+            f"{bodies} bodies, more than {max_bodies} (each is a URDF joint: "
+            "DENAVIT_MAX_URDF_JOINTS)",
+            FIELD,
+        )
     root_pose = root_body_pose(tree)
+    for name, path in mesh_files(tree):
+        if check_mesh is not None:
+            check_mesh(name, path)
+    real_root = os.path.realpath(root)
     with tempfile.TemporaryDirectory(prefix="denavit-mjcf-") as tmp:
         merged = Path(tmp) / "model.xml"
         merged.write_bytes(tostring(tree, encoding="utf-8"))
-        try:
-            model = pin.buildModelFromMJCF(str(merged))
-            geoms = {
-                kind: pin.buildGeomFromMJCF(model, str(merged), kind)
-                for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL)
-            }
-        except Exception as exc:  # noqa: BLE001 - whatever the parser throws: the document
-            message = " ".join(str(exc).split("message:")[-1].split())
-            message = message.replace(f"{os.path.realpath(root)}/", "").replace(f"{tmp}/", "")
-            raise InvalidInputError(f"not a valid MJCF model: {message}"[:500], FIELD) from None
-    return _urdf(model, geoms, main.parent, root_pose)
-
-
-def _urdf(
-    model: pin.Model, geoms: dict[object, pin.GeometryModel], base: Path, root_pose: pin.SE3
-) -> str:
-    """The URDF text of a Pinocchio model built from MJCF (see the module's docstring)."""
-    frames = list(model.frames)
-    taken = {f.name for f in frames if f.type == pin.FrameType.BODY}
-    link_of: dict[int, str] = {0: _unique("world", taken)}  # frame index -> URDF link
-    joint_link: dict[int, str] = {}  # joint index -> the link at the joint's frame
-    # placement of each link's frame in its parent joint's frame
-    link_in_joint: dict[str, pin.SE3] = {link_of[0]: pin.SE3.Identity()}
-    links: list[str] = [link_of[0]]
-    joints: list[str] = []
-    for index, frame in enumerate(frames):
-        if frame.type != pin.FrameType.BODY:
-            continue
-        parent = frames[frame.parentFrame]
-        if parent.type == pin.FrameType.JOINT:
-            j = frame.parentJoint
-            parent_link = link_of[_body_of(frames, parent.parentFrame)]
-            origin = link_in_joint[parent_link].inverse() * model.jointPlacements[j]
-            if frame.placement.isIdentity():
-                child = frame.name
-            else:
-                child = _unique(f"{model.names[j]}_link", taken)
-                links.append(child)
-            joints.append(_joint_xml(model, j, parent_link, child, origin))
-            joint_link[j] = child
-            link_in_joint[child] = pin.SE3.Identity()
-            if child != frame.name:
-                joints.append(_fixed_xml(f"{frame.name}_fixed", child, frame.name, frame.placement))
-        else:
-            parent_link = link_of[_body_of(frames, frame.parentFrame)]
-            origin = link_in_joint[parent_link].inverse() * frame.placement
-            name = parent.name if parent.type == pin.FrameType.FIXED_JOINT else ""
-            if not name or name == "universe":
-                name = f"{frame.name}_fixed"
-            if frame.parentFrame == 0:
-                origin = root_pose * origin  # Pinocchio dropped the root body's pose
-            joints.append(_fixed_xml(name, parent_link, frame.name, origin))
-        link_of[index] = frame.name
-        link_in_joint[frame.name] = frame.placement
-        links.append(frame.name)
-    body: dict[str, list[str]] = {name: [] for name in links}
-    for j, link in joint_link.items():
-        body[link].append(_inertial_xml(model.inertias[j]))
-    for kind, tag in (
-        (pin.GeometryType.VISUAL, "visual"),
-        (pin.GeometryType.COLLISION, "collision"),
-    ):
-        for obj in geoms[kind].geometryObjects:
-            link = link_of[_body_of(frames, obj.parentFrame)]
-            placement = link_in_joint[link].inverse() * obj.placement
-            for geometry, origin in _shapes(obj, placement, base):
-                body[link].append(
-                    f'    <{tag} name="{_xml(obj.name)}">\n      {_origin(origin)}\n'
-                    f"      <geometry>{geometry}</geometry>\n    </{tag}>\n"
-                )
-    out = [f'<?xml version="1.0"?>\n<robot name="{_xml(model.name or "mjcf")}">\n']
-    for name in links:
-        out.append(f'  <link name="{_xml(name)}">\n{"".join(body[name])}  </link>\n')
-    out.extend(joints)
-    out.append("</robot>\n")
-    return "".join(out)
-
-
-def _body_of(frames: list[pin.Frame], index: int) -> int:
-    """The BODY frame (or the universe, 0) a frame hangs from, walking up parents."""
-    while index != 0 and frames[index].type != pin.FrameType.BODY:
-        index = frames[index].parentFrame
-    return index
+        args = {
+            "model": str(merged),
+            "base": str(main.parent),
+            "root_pose": root_pose.homogeneous.tolist(),
+            "hide": [real_root, tmp],
+        }
+        urdf = run_child("mjcf", args, child, field=FIELD, what="reading the MJCF model")
+    if not isinstance(urdf, str):  # pragma: no cover - the child answers a document
+        raise InvalidInputError("the MJCF model gave no document", FIELD)
+    return urdf

@@ -11,10 +11,18 @@ URDF (and SRDF) text the service stores:
    ``package://<pkg>/<path>`` against package ``<pkg>``, which is the ``<name>`` of a
    ``package.xml`` in the archive (its directory) or else a top-level folder of the
    archive. ``package://example-robot-data/...`` (the catalog's files) stays as it is when
-   no package of the archive has that name. Absolute paths, ``file:///…``, other schemes,
-   unknown packages and paths leaving the archive (after normalising ``..``; the archive
-   holds no links) are refused, as is a reference to a file the archive does not have;
-3. each reference is rewritten to the one canonical form :data:`FILES_PREFIX` +
+   no package of the archive has that name. In an expanded xacro, the paths ``$(find)``
+   gives (``/package/<folder>/…``, with or without ``file://``) are the package's files.
+   Absolute paths, ``file:///…``, other schemes, unknown packages and paths leaving the
+   archive (after normalising ``..``; the archive holds no links) are refused, as is a
+   reference to a file the archive does not have;
+3. every mesh's header is read (:func:`app.kinematics.meshes.check_header`: declared
+   vertices and faces within ``DENAVIT_MAX_MESH_VERTICES``, a collision mesh's faces within
+   ``DENAVIT_MAX_COLLISION_TRIANGLES``), and every file a mesh names (OBJ ``mtllib``, MTL
+   textures, COLLADA images and URLs, PLY texture comments:
+   :func:`app.kinematics.mesh_files.mesh_references`) must lie inside the package, by the
+   same rules (a missing one is allowed: no loader opens a file that is not there);
+4. each reference is rewritten to the one canonical form :data:`FILES_PREFIX` +
    ``<path in the archive>``: Pinocchio resolves it with the robot's directory as package
    directory (the files are stored under ``<robot dir>/files/``), and it maps to
    ``GET /robots/{robot_id}/files/<path in the archive>``.
@@ -30,14 +38,18 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from urllib.parse import unquote
 from xml.etree.ElementTree import Element, tostring
 
+from app.documents.limits import UploadLimits
 from app.documents.manifests import package_names, read_member
 from app.documents.mjcf import mjcf_to_urdf
 from app.documents.urdf import check_resource_uri, resource_elements
-from app.documents.xacro import XacroLimits, expand_xacro
+from app.documents.xacro import expand_xacro
+from app.documents.xacro_child import VIRTUAL_ROOT
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.meshes import MESH_FORMATS
+from app.kinematics.mesh_files import MeshFileError, mesh_references
+from app.kinematics.meshes import MESH_FORMATS, MeshLimits, check_header
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 from app.store import PACKAGE_DIR
 
@@ -49,7 +61,9 @@ FILES_PREFIX = f"package://{PACKAGE_DIR}/"
 CATALOG_PACKAGE = "example-robot-data"
 DESCRIPTION_TYPES = (".urdf", ".xacro", ".xml")
 _SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.-]*://")
-_MTLLIB = re.compile(rb"^\s*mtllib\s+(.+?)\s*$", re.MULTILINE)
+_DRIVE = re.compile(r"^[A-Za-z]:")
+#: A URI scheme in a name a mesh file writes (two letters at least: ``C:`` is a drive).
+_REF_SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.-]+:")
 
 
 @dataclass
@@ -66,10 +80,20 @@ class Package:
 
 
 class _Resolver:
-    """Resolves the references of one description inside its package."""
+    """Resolves the references of one description inside its package.
+
+    ``virtual_root``: where the description saw the package (an expanded xacro's
+    ``/package``): absolute paths under it are the package's files.
+    """
 
     def __init__(
-        self, root: Path, base: str, packages: Mapping[str, str], catalog: Path, fld: str
+        self,
+        root: Path,
+        base: str,
+        packages: Mapping[str, str],
+        catalog: Path,
+        fld: str,
+        virtual_root: str | None = None,
     ) -> None:
         self.root = root
         self.real_root = root.resolve()
@@ -77,14 +101,23 @@ class _Resolver:
         self.packages = packages
         self.catalog = catalog
         self.field = fld
+        self.virtual_root = virtual_root
 
     def _refuse(self, tag: str, uri: str, reason: str) -> InvalidInputError:
         return InvalidInputError(f"<{tag} filename={uri[:200]!r}>: {reason}", self.field)
+
+    def _virtual(self, path: str) -> str | None:
+        """``path`` relative to the package when it is under :attr:`virtual_root`."""
+        root = self.virtual_root
+        if root is not None and (path == root or path.startswith(root + "/")):
+            return path[len(root) + 1 :]
+        return None
 
     def resolve(self, tag: str, uri: str) -> tuple[str, Path]:
         """``(canonical URI, file)`` for a ``filename``; raises naming it."""
         if any(c.isspace() or ord(c) < 32 or c in "\\%?#" for c in uri) or not uri:
             raise self._refuse(tag, uri, "empty, or whitespace, '\\', '%', '?' or '#' in it")
+        start = self.base
         if uri.startswith("package://"):
             pkg, _, rest = uri[len("package://") :].partition("/")
             if pkg not in self.packages:
@@ -102,21 +135,22 @@ class _Resolver:
         elif uri.startswith("file://"):
             path = uri[len("file://") :]
             if path.startswith("/"):
-                raise self._refuse(tag, uri, "absolute file:// URIs are not allowed")
-            start = self.base
+                inside = self._virtual(path)
+                if inside is None:
+                    raise self._refuse(tag, uri, "absolute file:// URIs are not allowed")
+                start, path = "", inside
         elif _SCHEME.match(uri):
             scheme = uri.split("://", 1)[0]
             raise self._refuse(tag, uri, f"scheme {scheme}:// is not allowed")
-        elif uri.startswith("/") or re.match(r"^[A-Za-z]:", uri):
-            raise self._refuse(tag, uri, "absolute paths are not allowed")
+        elif uri.startswith("/") or _DRIVE.match(uri):
+            inside = self._virtual(uri)
+            if inside is None:
+                raise self._refuse(tag, uri, "absolute paths are not allowed")
+            start, path = "", inside
         else:
-            start, path = self.base, uri
-        rel = posixpath.normpath(posixpath.join(start, path)) if path else ".."
-        if rel == ".." or rel.startswith("../") or rel.startswith("/") or rel == ".":
-            raise self._refuse(tag, uri, "the path leaves the package")
+            path = uri
+        rel = self._confined(tag, uri, start, path)
         file = self.root / rel
-        if not file.resolve().is_relative_to(self.real_root):
-            raise self._refuse(tag, uri, "the path leaves the package")
         if not file.is_file():
             raise self._refuse(tag, uri, f"{rel!r} is not a file of the archive")
         canonical = FILES_PREFIX + rel
@@ -125,21 +159,70 @@ class _Resolver:
             raise self._refuse(tag, uri, f"the file name {rel!r} is not usable ({why})")
         return canonical, file
 
-    def check_obj_materials(self, uri: str, file: Path) -> None:
-        """An OBJ's ``mtllib`` files must lie in the package too (assimp opens them)."""
-        if file.suffix.lower() != ".obj" or not file.is_relative_to(self.root):
-            return
-        folder = file.parent.relative_to(self.root).as_posix()
-        for match in _MTLLIB.finditer(file.read_bytes()):
-            name = match.group(1).decode("utf-8", "replace")
-            rel = posixpath.normpath(posixpath.join(folder, name))
-            if name.startswith("/") or rel == ".." or rel.startswith("../"):
-                raise self._refuse("mesh", uri, f"its material library {name!r} leaves the package")
+    def _confined(self, tag: str, uri: str, start: str, path: str) -> str:
+        """``start/path`` normalised, if it stays in the package (symlinks followed)."""
+        rel = posixpath.normpath(posixpath.join(start, path)) if path else ".."
+        if rel == ".." or rel.startswith("../") or rel.startswith("/") or rel == ".":
+            raise self._refuse(tag, uri, "the path leaves the package")
+        if not (self.root / rel).resolve().is_relative_to(self.real_root):
+            raise self._refuse(tag, uri, "the path leaves the package")
+        return rel
+
+    def check_named_files(self, uri: str, file: Path) -> None:
+        """Every file the mesh ``file`` names (and, for an OBJ, its material libraries
+        name) lies inside the package (:func:`app.kinematics.mesh_files.mesh_references`).
+        A named file the package lacks is allowed: no loader opens it."""
+        todo = [file]
+        seen: set[Path] = set()
+        while todo:
+            current = todo.pop()
+            if current in seen or not current.is_relative_to(self.root):
+                continue
+            seen.add(current)
+            folder = current.parent.relative_to(self.root).as_posix()
+            where = current.relative_to(self.root).as_posix()
+            try:
+                references = mesh_references(current)
+            except (MeshFileError, OSError) as exc:
+                raise self._refuse("mesh", uri, f"{where} cannot be read ({exc})") from None
+            for ref in references:
+                rel = self._confine_reference(uri, where, ref.what, ref.name, folder)
+                target = self.root / rel
+                if ref.what == "mtllib" and target.suffix.lower() == ".mtl" and target.is_file():
+                    todo.append(target)
+
+    def _confine_reference(self, uri: str, where: str, what: str, name: str, folder: str) -> str:
+        """``name`` (written in the file ``where``) relative to the package, or refuse."""
+        label = {"mtllib": "material library", "url": "URL"}.get(what, what)
+        shown = f"{where} names the {label} {name[:200]!r}"
+        if any(ord(c) < 32 for c in name):
+            raise self._refuse("mesh", uri, f"{shown}: control characters in it")
+        name = name.replace("\\", "/")  # a loader may read a backslash as a separator
+        candidates = [name]
+        if "%" in name:
+            candidates.append(unquote(name))
+        for candidate in candidates:
+            path = candidate
+            if path.lower().startswith("file://"):
+                path = path[len("file://") :]
+            elif _REF_SCHEME.match(path):
+                raise self._refuse("mesh", uri, f"{shown}: no scheme is allowed")
+            if path.startswith("/") or _DRIVE.match(path):
+                raise self._refuse("mesh", uri, f"{shown}: absolute paths leave the package")
+            try:
+                rel = self._confined("mesh", uri, folder, path)
+            except InvalidInputError:
+                raise self._refuse("mesh", uri, f"{shown}: the path leaves the package") from None
+        return rel
 
 
-def rewrite_references(urdf: str, resolver: _Resolver, limits: XmlLimits) -> Package:
-    """The URDF with every mesh/texture reference in canonical form, and its meshes."""
+def rewrite_references(
+    urdf: str, resolver: _Resolver, limits: XmlLimits, mesh_limits: MeshLimits
+) -> Package:
+    """The URDF with every mesh/texture reference in canonical form, and its meshes (their
+    headers and the files they name checked)."""
     root = parse_literal_xml(urdf, resolver.field, limits)
+    collision = {id(m) for c in root.iter("collision") for m in c.iter("mesh")}
     meshes: dict[str, Path] = {}
     for element, uri in resource_elements(root):
         canonical, file = resolver.resolve(element.tag, uri)
@@ -149,7 +232,8 @@ def rewrite_references(urdf: str, resolver: _Resolver, limits: XmlLimits) -> Pac
                 raise resolver._refuse(
                     "mesh", uri, f"unsupported format (use {', '.join(sorted(MESH_FORMATS))})"
                 )
-            resolver.check_obj_materials(uri, file)
+            check_header(file, uri, mesh_limits, "archive", id(element) in collision)
+            resolver.check_named_files(uri, file)
             meshes[uri] = file
     return Package(tostring(root, encoding="unicode"), None, meshes)
 
@@ -161,8 +245,7 @@ def read_package(
     srdf: str | None,
     xacro_args: Mapping[str, str],
     catalog: Path,
-    limits: XmlLimits,
-    xacro_limits: XacroLimits = XacroLimits(),
+    limits: UploadLimits = UploadLimits(),
 ) -> Package:
     """The URDF (references rewritten, see the module docstring) and SRDF of a package.
 
@@ -176,8 +259,9 @@ def read_package(
         Arguments of a ``.xacro`` description.
     catalog
         The example-robot-data ``share`` directory (for ``package://example-robot-data``).
-    limits, xacro_limits
-        XML work bounds; the bounds of a xacro expansion (time, memory, output).
+    limits
+        The upload's bounds: XML work, the xacro expansion (time, memory, output), the
+        meshes, the child converting an MJCF description.
     """
     lowered = description.lower()
     if not lowered.endswith(DESCRIPTION_TYPES):
@@ -186,24 +270,41 @@ def read_package(
             "description",
         )
     rel, text = read_member(root, description, "description", "description")
-    packages = package_names(root, limits)
+    packages = package_names(root, limits.urdf.xml)
+    xacro_limits, mesh_limits = limits.xacro, limits.mesh
+    virtual_root = None
+    resolver = _Resolver(root, posixpath.dirname(rel), packages, catalog, "description")
+
+    def check_mesh(name: str, path: Path) -> None:  # an MJCF mesh asset
+        uri = path.relative_to(resolver.real_root).as_posix()
+        check_header(path, uri, mesh_limits, "archive", collision=False)
+        resolver.check_named_files(uri, resolver.root / uri)
+
     if lowered.endswith(".xacro"):
         urdf = expand_xacro(
             root,
             rel,
             xacro_args,
-            limits,
+            limits.urdf.xml,
             packages=packages,
             timeout_s=xacro_limits.timeout_s,
             memory_bytes=xacro_limits.memory_bytes,
             max_output_chars=xacro_limits.max_output_chars,
         )
+        virtual_root = VIRTUAL_ROOT
     elif lowered.endswith(".xml"):
-        urdf = mjcf_to_urdf(root, rel, limits)
+        urdf = mjcf_to_urdf(
+            root,
+            rel,
+            limits.urdf.xml,
+            max_bodies=limits.urdf.max_joints,
+            child=limits.parse,
+            check_mesh=check_mesh,
+        )
     else:
         urdf = text
-    resolver = _Resolver(root, posixpath.dirname(rel), packages, catalog, "description")
-    package = rewrite_references(urdf, resolver, limits)
+    resolver.virtual_root = virtual_root
+    package = rewrite_references(urdf, resolver, limits.urdf.xml, mesh_limits)
     if srdf is not None:
         package.srdf = read_member(root, srdf, "srdf", "srdf")[1]
     return package

@@ -1,14 +1,13 @@
 """Expanding a client's ``.urdf.xacro`` into URDF text, confined to its package.
 
-The expansion runs in a child process of its own (:mod:`app.documents.xacro_child`),
-started with ``python -I -B`` and an empty environment, which dies with the thread that
-waits for it (``PR_SET_PDEATHSIG``, as :mod:`app.kinematics.procwatch` does for
-reachability builds) and is bounded: wall-clock time (killed after ``timeout_s``), CPU
-time, address space (``memory_bytes`` over what it uses at start), no file writes, no new
-processes; its answer is read up to ``max_output_chars``. Inside it, xacro reads files
-only from the package, sees no environment variable, and evaluates only checked
-expressions (see the child's module). A typical expansion costs the child's start (about
-0.2-0.4 s: Python and the xacro import) plus the expansion itself.
+The expansion runs in a bounded child process of its own (:mod:`app.documents.sandbox`,
+task ``xacro`` of :mod:`app.documents.xacro_child`): wall-clock time (killed after
+``timeout_s``), CPU time, address space (``memory_bytes`` over what it uses at start), no
+file writes, no new processes; its answer is read up to ``max_output_chars``. Inside it,
+xacro reads files only from the package, which it sees at ``/package``
+(:data:`~app.documents.xacro_child.VIRTUAL_ROOT`), sees no environment variable, and
+evaluates only checked expressions (see the child's module). A typical expansion costs the
+child's start (about 0.2-0.4 s: Python and the xacro import) plus the expansion itself.
 
 The arguments (``xacro_args``) are strings; JSON numbers and booleans are accepted and
 written as xacro would read them (``0.1``, ``true``).
@@ -16,20 +15,15 @@ written as xacro would read them (``0.1``, ``true``).
 
 from __future__ import annotations
 
-import json
 import math
 import os
 import re
-import selectors
-import subprocess
-import sys
-import time
 from collections.abc import Mapping
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-import app
 from app.documents.manifests import package_names
+from app.documents.sandbox import ChildLimits, run_child
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
@@ -53,7 +47,6 @@ class XacroLimits:
 MAX_ARGS = 256
 MAX_ARG_CHARS = 4096
 _ARG_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_.\-]{0,127}$")
-_CHILD = "from app.documents.xacro_child import main; main({pid})"
 
 
 def _arg_value(name: str, value: object) -> str:
@@ -111,71 +104,6 @@ def _description_path(root: Path, description: str) -> Path:
     return path
 
 
-def _run_child(request: dict[str, object], timeout_s: float, max_output: int) -> dict[str, str]:
-    """Run the child with ``request`` and return its answer (bounded in time and size)."""
-    path = str(Path(app.__file__).parent.parent)
-    code = f"import sys; sys.path.insert(0, {path!r}); {_CHILD.format(pid=os.getpid())}"
-    proc = subprocess.Popen(
-        [sys.executable, "-I", "-B", "-c", code],  # isolated, writes no bytecode
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-        env={},
-        cwd="/",
-        close_fds=True,
-    )
-    try:
-        assert proc.stdin is not None and proc.stdout is not None
-        proc.stdin.write(json.dumps(request).encode("utf-8"))
-        proc.stdin.close()
-        chunks: list[bytes] = []
-        size = 0
-        deadline = time.monotonic() + timeout_s
-        with selectors.DefaultSelector() as sel:
-            sel.register(proc.stdout, selectors.EVENT_READ)
-            while True:
-                left = deadline - time.monotonic()
-                if left <= 0:
-                    raise InvalidInputError(
-                        f"xacro expansion took longer than {timeout_s:g} s "
-                        "(DENAVIT_XACRO_TIMEOUT_S)",
-                        "description",
-                    )
-                if not sel.select(left):
-                    continue
-                data = os.read(proc.stdout.fileno(), 1 << 16)
-                if not data:
-                    break
-                chunks.append(data)
-                size += len(data)
-                if size > max_output:
-                    raise InvalidInputError(
-                        f"the expanded URDF is larger than {max_output} bytes "
-                        "(DENAVIT_XACRO_MAX_OUTPUT_CHARS)",
-                        "description",
-                    )
-        proc.wait(timeout=max(1.0, deadline - time.monotonic()))
-    except subprocess.TimeoutExpired:
-        raise InvalidInputError("xacro expansion did not finish", "description") from None
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        if proc.stdout is not None:
-            proc.stdout.close()
-    try:
-        answer = json.loads(b"".join(chunks))
-    except ValueError:
-        answer = None
-    if not isinstance(answer, dict):
-        raise InvalidInputError(
-            "xacro expansion failed: it exceeded its memory or CPU limits "
-            f"(exit status {proc.returncode}; DENAVIT_XACRO_MEMORY_BYTES)",
-            "description",
-        )
-    return answer
-
-
 def expand_xacro(
     root: Path,
     description: str,
@@ -225,18 +153,17 @@ def expand_xacro(
         "args": checked_args,
         "packages": dict(packages),
         "limits": asdict(limits),
-        "memory_bytes": int(memory_bytes),
-        "cpu_s": math.ceil(1.5 * timeout_s) + 1,  # a backstop: the wall-clock timeout rules
         "max_output_chars": int(max_output_chars),
     }
-    answer = _run_child(request, timeout_s, 4 * max_output_chars + 1024)
-    if "error" in answer:
-        field = answer.get("field")
-        raise InvalidInputError(
-            str(answer["error"]), field if field in ("description", "xacro_args") else "description"
-        )
-    urdf = answer.get("urdf")
-    if not isinstance(urdf, str):  # pragma: no cover - the child always answers one of both
+    bounds = ChildLimits(
+        timeout_s,
+        memory_bytes,
+        4 * max_output_chars + 1024,
+        "DENAVIT_XACRO_TIMEOUT_S",
+        "DENAVIT_XACRO_MEMORY_BYTES",
+    )
+    urdf = run_child("xacro", request, bounds, field="description", what="xacro expansion")
+    if not isinstance(urdf, str):  # pragma: no cover - the child answers a document
         raise InvalidInputError("xacro expansion gave no document", "description")
     try:
         parse_literal_xml(urdf, "description", limits)

@@ -1,20 +1,23 @@
-"""The child process that expands one untrusted xacro document (see :mod:`app.documents.xacro`).
+"""The xacro task of the sandbox child: expands one untrusted xacro document.
 
-Run as ``python -I -c 'from app.documents.xacro_child import main; main()'`` with an empty
-environment. It first makes itself die with its parent (``PR_SET_PDEATHSIG``) and bounds
-itself (address space, CPU time, no file writes, no new processes, few open files), then
-reads one JSON request from stdin, expands the document with the ``xacro`` package, and
-writes one JSON answer to stdout: ``{"urdf": text}`` or ``{"error": message, "field":
-field}``.
+:func:`run` is called in the bounded child process of :mod:`app.documents.sandbox` (task
+``xacro``, started by :func:`app.documents.xacro.expand_xacro`): it expands the document
+with the ``xacro`` package and returns the URDF text, or raises
+:class:`~app.kinematics.errors.InvalidInputError` naming the file and line.
 
-xacro is confined by replacing the few functions through which it touches the system:
+xacro sees the package at :data:`VIRTUAL_ROOT` (``/package``), never at its place on this
+host: ``$(find pkg)``, ``$(dirname)`` and ``xacro.abs_filename()`` give paths under it, so
+no path of the server reaches the expanded document or an error message. xacro is confined
+by replacing the few functions through which it touches the system:
 
 - files (the description, ``xacro:include``, ``xacro.load_yaml``) are opened only when
-  their real path (symlinks resolved) is a regular file inside the package root, and each
-  XML file passes :func:`app.kinematics.xmldoc.parse_literal_xml` with the upload's limits
-  before xacro parses it;
+  their path is under :data:`VIRTUAL_ROOT` and their real path (symlinks resolved) is a
+  regular file inside the package, and each XML file passes
+  :func:`app.kinematics.xmldoc.parse_literal_xml` with the upload's limits before xacro
+  parses it;
 - ``$(find pkg)`` names only the archive's packages, as the parent found them with
-  :func:`app.documents.manifests.package_names` (the same names ``package://`` takes);
+  :func:`app.documents.manifests.package_names` (the same names ``package://`` takes), at
+  ``/package/<folder>``;
 - ``$(env NAME)`` / ``$(optenv NAME default)`` see no environment variable (every one is
   unset: ``env`` is an error, ``optenv`` gives its default); ``$(cwd)`` is refused;
 - ``${...}`` and ``$(eval ...)`` go through :mod:`app.documents.xacro_expr`; ``python.type``
@@ -28,12 +31,10 @@ expanded.
 
 from __future__ import annotations
 
-import json
 import os
+import posixpath
 import re
-import resource
 import stat
-import sys
 import xml.dom.minidom
 from dataclasses import dataclass
 from pathlib import Path
@@ -43,9 +44,10 @@ from xml.parsers import expat
 
 from app.documents.xacro_expr import GUARDS, ExpressionRefused, compile_expression
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.procwatch import set_parent_death_signal
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
+#: Where xacro sees the package (every path it computes is under it).
+VIRTUAL_ROOT = "/package"
 #: Largest file (bytes) the expansion may read (description, include, YAML).
 MAX_FILE_BYTES = 8 * 1024 * 1024
 #: Nodes macro expansion may clone, per allowed output element.
@@ -66,9 +68,9 @@ class Missing(Refusal):
 
 @dataclass
 class _State:
-    root: Path
+    real_root: Path
     limits: XmlLimits
-    packages: dict[str, Path]
+    packages: dict[str, str]
     #: id(node) -> (node, file, line): where each element was written (clones included).
     lines: dict[int, tuple[Any, str, int]]
     clones: int = 0
@@ -84,19 +86,36 @@ def _state() -> _State:
 
 
 def _rel(path: str | Path) -> str:
-    try:
-        return Path(path).relative_to(_state().root).as_posix()
-    except ValueError:
-        return str(path)
+    """``path`` (virtual, or real inside the package) relative to the package's root."""
+    text = posixpath.normpath(os.fspath(path))
+    for root in (VIRTUAL_ROOT, str(_state().real_root)):
+        if text.startswith(root + "/"):
+            return text[len(root) + 1 :]
+    return text
+
+
+def real_path(path: str | Path) -> Path | None:
+    """The place on this host of a path under :data:`VIRTUAL_ROOT` (``None`` otherwise);
+    not resolved: ``..`` and symlinks are the caller's to check."""
+    text = os.fspath(path)
+    if text == VIRTUAL_ROOT:
+        return _state().real_root
+    if text.startswith(VIRTUAL_ROOT + "/"):
+        return _state().real_root / text[len(VIRTUAL_ROOT) + 1 :]
+    return None
 
 
 def confine(path: str | Path, what: str) -> Path:
-    """The real path of ``path`` if it is a regular file inside the root, else refuse."""
-    root = _state().root
+    """The real path of the virtual ``path`` if it is a regular file inside the package,
+    else refuse."""
+    root = _state().real_root
+    mapped = real_path(path)
+    if mapped is None or "\x00" in os.fspath(path):
+        raise Refusal(f"{what} {os.fspath(path)[:200]!r} is outside the package")
     try:
-        real = Path(os.path.realpath(path))
+        real = Path(os.path.realpath(mapped))
     except (OSError, ValueError) as exc:
-        raise Refusal(f"{what} {str(path)!r}: {exc}") from None
+        raise Refusal(f"{what} {_rel(path)!r}: {type(exc).__name__}") from None
     if real != root and root not in real.parents:
         raise Refusal(f"{what} {_rel(path)!r} is outside the package")
     try:
@@ -168,12 +187,14 @@ def _install_hooks(xacro: Any) -> None:
     def get_include_files(filename_spec: str, symbols: Any) -> Any:
         spec = xacro.abs_filename_spec(xacro.eval_text(filename_spec, symbols))
         if re.search(r"[*[?]", spec):
-            base = Path(spec.split("*")[0].split("?")[0].split("[")[0]).parent
-            if ".." in Path(spec).parts or (base != state.root and state.root not in base.parents):
-                raise Refusal(f"xacro:include of {spec!r} is outside the package")
+            mapped = real_path(spec)
+            if mapped is None or ".." in Path(spec).parts:
+                raise Refusal(f"xacro:include of {spec[:200]!r} is outside the package")
             import glob
 
-            names = sorted(glob.glob(spec))[:1000]
+            real = str(state.real_root)
+            found = sorted(glob.glob(str(mapped)))[:1000]
+            names = [VIRTUAL_ROOT + f[len(real) :] for f in found if f.startswith(real + "/")]
         else:
             names = [spec]
         for name in names:
@@ -324,32 +345,11 @@ def _message(exc: BaseException) -> tuple[str, str]:
         text = str(exc) or type(exc).__name__
         text = re.sub(r"<class '[\w.]+'>: ", "", text)
     if _STATE is not None:
-        text = text.replace(f"{_STATE.root}/", "")
+        for root in (str(_STATE.real_root), VIRTUAL_ROOT):
+            text = text.replace(f"{root}/", "").replace(root, ".")
     text = " ".join(text.split())[:2000]
     where = _where() if _STATE is not None else ""
     return (f"{where}: {text}" if where else text), field
-
-
-def _limit_self(memory_bytes: int, cpu_s: int) -> None:
-    """Bound this process: address space, CPU time, no file writes or new processes."""
-    try:
-        with open("/proc/self/statm") as f:
-            used = int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
-    except OSError:  # pragma: no cover - not Linux
-        used = 256 * 1024 * 1024
-    limits = {
-        resource.RLIMIT_AS: used + memory_bytes,
-        resource.RLIMIT_CPU: cpu_s,
-        resource.RLIMIT_FSIZE: 0,
-        resource.RLIMIT_NOFILE: 32,
-        resource.RLIMIT_NPROC: 0,
-        resource.RLIMIT_CORE: 0,
-    }
-    for which, value in limits.items():
-        try:
-            resource.setrlimit(which, (value, value))
-        except (ValueError, OSError):  # pragma: no cover - already lower, or not allowed
-            pass
 
 
 def expand(
@@ -362,48 +362,41 @@ def expand(
     """Expand ``root / description`` (in this process: call it only in the child).
 
     ``packages`` maps each name ``$(find <pkg>)`` knows to its folder relative to ``root``.
+    xacro sees ``root`` as :data:`VIRTUAL_ROOT`.
     """
     global _STATE
     import xacro
 
-    _STATE = _State(root, limits, {name: root / folder for name, folder in packages.items()}, {})
+    virtual = {
+        name: posixpath.join(VIRTUAL_ROOT, folder).rstrip("/") for name, folder in packages.items()
+    }
+    _STATE = _State(Path(os.path.realpath(root)), limits, virtual, {})
     _install_hooks(xacro)
-    path = str(root / description)
+    path = posixpath.join(VIRTUAL_ROOT, description)
     xacro.init_stacks(path)
     doc = parse_file(path, "description")
     xacro.process_doc(doc, mappings=dict(args))
     return doc.toprettyxml(indent="  ")
 
 
-def main(parent: int | None = None) -> None:
-    """Read the request from stdin, expand, write the answer to stdout (one JSON each).
-
-    ``parent`` is the PID of the process that started this one: if it is already gone
-    (this process was re-parented before it could ask for the death signal), this process
-    is killed at once (see :func:`app.kinematics.procwatch.set_parent_death_signal`).
-    """
-    set_parent_death_signal(parent=parent)
-    request = json.loads(sys.stdin.buffer.read())
-    _limit_self(int(request["memory_bytes"]), int(request["cpu_s"]))
+def run(args: dict[str, Any]) -> str:
+    """The sandbox task: the URDF text of ``args["description"]`` (a path in the package
+    ``args["root"]``) expanded with ``args["args"]``; refusals name the file and line."""
     try:
         urdf = expand(
-            Path(request["root"]),
-            request["description"],
-            request["args"],
-            XmlLimits(**request["limits"]),
-            request["packages"],
+            Path(args["root"]),
+            args["description"],
+            args["args"],
+            XmlLimits(**args["limits"]),
+            args["packages"],
         )
-        if len(urdf) > request["max_output_chars"]:
-            answer = {
-                "error": f"the expanded URDF has more than {request['max_output_chars']} "
-                "characters (DENAVIT_XACRO_MAX_OUTPUT_CHARS)",
-                "field": "description",
-            }
-        else:
-            answer = {"urdf": urdf}
     except BaseException as exc:  # noqa: BLE001 - every failure is the client's document
         message, field = _message(exc)
-        answer = {"error": message, "field": field}
-    out = json.dumps(answer).encode("utf-8", "surrogatepass")
-    sys.stdout.buffer.write(out)
-    sys.stdout.buffer.flush()
+        raise InvalidInputError(message, field) from None
+    if len(urdf) > args["max_output_chars"]:
+        raise InvalidInputError(
+            f"the expanded URDF has more than {args['max_output_chars']} characters "
+            "(DENAVIT_XACRO_MAX_OUTPUT_CHARS)",
+            "description",
+        )
+    return urdf

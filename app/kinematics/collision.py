@@ -2,9 +2,10 @@
 
 Collision model
 ---------------
-The robot's collision geometry is the URDF's ``<collision>`` elements, loaded by
-``pin.buildGeomFromUrdfString(model, urdf, pin.COLLISION, package_dirs)`` into a
-``pin.GeometryModel``: meshes become coal ``BVHModelOBBRSS`` objects, URDF primitives coal
+The robot's collision geometry is the URDF's ``<collision>`` elements, loaded as
+``pin.buildGeomFromUrdfString(model, urdf, pin.COLLISION, package_dirs)`` loads them, each
+mesh after its header check and on its own (:func:`app.kinematics.meshes.collision_geometry`),
+into a ``pin.GeometryModel``: meshes become coal ``BVHModelOBBRSS`` objects, URDF primitives coal
 ``Box``/``Sphere``/``Cylinder`` shapes (the capsules of DH robots are a cylinder plus a
 sphere at each end). Each geometry is attached to a *link* (the URDF link whose
 ``<collision>`` it is, a Pinocchio frame) and moves with that link's Pinocchio joint.
@@ -46,7 +47,6 @@ GJK warm starts are off, so an answer never depends on what the thread checked b
 
 from __future__ import annotations
 
-import logging
 import threading
 import warnings
 from collections import OrderedDict
@@ -60,27 +60,14 @@ import pinocchio as pin
 
 from app.kinematics.collision_pairs import LinkPair, checked_link_pairs
 from app.kinematics.errors import Cancelled, InvalidInputError
+from app.kinematics.meshes import collision_geometry
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
-from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 GEOMETRY_MODES = ("mesh", "convex")
 #: Combined robot + obstacle models kept per robot and geometry mode (least recently used
 #: dropped first).
 MAX_CACHED_SCENES = 32
-
-log = logging.getLogger("denavit.collision")
-
-
-def _failing_mesh(urdf_text: str, message: str) -> str | None:
-    """The URDF's own mesh ``filename`` a loader error is about (never the resolved path)."""
-    root = parse_literal_xml(urdf_text, "urdf", TRUSTED)
-    for mesh in root.iter("mesh"):
-        uri = mesh.get("filename") or ""
-        tail = uri.split("://", 1)[-1]
-        if uri and (uri in message or (tail and tail in message)):
-            return uri
-    return None
 
 
 # ------------------------------------------------------------------------------- results
@@ -219,20 +206,17 @@ class CollisionModel:
         self.robot = robot
         self.mode = mode
         try:
-            gm = pin.buildGeomFromUrdfString(
-                robot.model, robot.urdf_text, pin.COLLISION, package_dirs=robot.package_dirs
+            gm = collision_geometry(
+                robot.model, robot.urdf_text, robot.package_dirs, robot.mesh_limits
             )
-        except (ValueError, RuntimeError, OSError, IndexError, KeyError, TypeError) as exc:
-            # The loader's text holds host paths and C++ source locations: log it, answer
-            # with what the client can act on.
-            log.warning("collision geometry of robot %r: %s", robot.id, exc)
-            found = "could not be found" not in str(exc)
-            mesh = _failing_mesh(robot.urdf_text, str(exc))
-            which = f"mesh {mesh!r}" if mesh else "a mesh file"
-            reason = f"{which} is not a readable mesh" if found else f"{which} is missing"
+        except InvalidInputError as exc:
             raise InvalidInputError(
-                f"the collision geometry of robot {robot.id!r} cannot be loaded ({reason})",
+                f"the collision geometry of robot {robot.id!r} cannot be loaded ({exc.message})",
                 "robot_id",
+            ) from None
+        except (ValueError, RuntimeError, OSError, IndexError, KeyError, TypeError):
+            raise InvalidInputError(
+                f"the collision geometry of robot {robot.id!r} cannot be loaded", "robot_id"
             ) from None
         if mode == "convex":
             for go in gm.geometryObjects:

@@ -27,6 +27,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.meshes import MeshLimits
 from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
 from app.kinematics.semantics import parse_semantics
 from app.kinematics.tip import bare_links, default_tip
@@ -232,6 +233,7 @@ class RobotModel:
         self._local = threading.local()
         self._lock = threading.Lock()
         self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
+        self.mesh_limits = MeshLimits()  # bounds on its collision meshes (the registry's)
 
         root = parse_literal_xml(urdf_text, "urdf", TRUSTED)  # the one parse of the URDF here
         urdf_joints = urdf_joint_table(root)
@@ -321,7 +323,6 @@ class RobotModel:
         self.ee_frame = ee_frame if ee_frame is not None else self._default_tip(bare_links(root))
         self.frame_id(self.ee_frame, field="ee_frame")
 
-    # ------------------------------------------------------------------ frames and joints
     def _default_tip(self, bare: set[str]) -> str:
         """The tip of the longest serial chain that is not a gripper finger (see
         :mod:`app.kinematics.tip`; ``bare``: the names of the links without geometry)."""
@@ -357,7 +358,6 @@ class RobotModel:
         cols = np.array([j.index for j in self.joints if j.pin_id in support], dtype=int)
         return cols if among is None else cols[np.isin(cols, among)]
 
-    # --------------------------------------------------------------------- configurations
     @property
     def data(self) -> pin.Data:
         """This thread's Pinocchio Data for the model (created on first use)."""

@@ -1,0 +1,89 @@
+"""Every mesh of an upload read, and its collision model built, in a bounded child process.
+
+:func:`check_meshes` runs task ``meshes`` (:func:`check_in_child`) of
+:mod:`app.documents.sandbox`. In the child, each mesh file the URDF names (collision and
+visual) has its header checked (:func:`app.kinematics.meshes.check_header`) and is then
+loaded by coal's loader; the robot's collision geometry is then built exactly as a worker
+builds it (:func:`app.kinematics.meshes.collision_geometry`), and its triangles counted
+against ``DENAVIT_MAX_COLLISION_TRIANGLES``. So a 201 means every mesh loads and collisions
+work, and whatever a mesh does to the loader (stall, balloon, crash) happens in the child,
+bounded by ``DENAVIT_PARSE_TIMEOUT_S`` and ``DENAVIT_PARSE_MEMORY_BYTES``, never in a
+worker.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from app.documents.sandbox import ChildLimits, run_child
+from app.kinematics.errors import InvalidInputError
+from app.kinematics.meshes import MeshLimits, check_header, collision_geometry, load_mesh
+
+
+def check_meshes(
+    urdf: str,
+    meshes: Mapping[str, Path],
+    package_dirs: Sequence[str],
+    limits: MeshLimits,
+    child: ChildLimits,
+    field: str,
+) -> int:
+    """Load every mesh of ``urdf`` and build its collision geometry in a bounded child; the
+    number of collision triangles.
+
+    Parameters
+    ----------
+    urdf
+        The URDF as it will be stored (its mesh URIs resolve against ``package_dirs``).
+    meshes
+        Each mesh URI as the client wrote it → its file (visual and collision meshes).
+    limits, child
+        Bounds on the meshes; bounds on the child process.
+    field
+        The request field refusals name.
+
+    Raises
+    ------
+    InvalidInputError
+        ``field``, naming the first mesh refused (header, loader, triangles) or the limit
+        the child hit.
+    """
+    args = {
+        "urdf": urdf,
+        "meshes": {uri: str(path) for uri, path in meshes.items()},
+        "package_dirs": list(package_dirs),
+        "limits": asdict(limits),
+        "field": field,
+    }
+    result = run_child("meshes", args, child, field=field, what="reading the meshes")
+    return int(result["collision_triangles"])
+
+
+def check_in_child(args: dict[str, Any]) -> dict[str, int]:
+    """The sandbox task (see the module docstring); runs in the child only."""
+    import pinocchio as pin
+
+    limits = MeshLimits(**args["limits"])
+    field = args["field"]
+    for uri, path in args["meshes"].items():
+        check_header(Path(path), uri, limits, field, collision=False)
+        load_mesh(Path(path), np.ones(3), uri, field)
+    try:
+        model = pin.buildModelFromXML(args["urdf"], mimic=True)
+    except (ValueError, RuntimeError) as exc:  # pragma: no cover - checked before
+        raise InvalidInputError(f"the URDF cannot be read ({type(exc).__name__})", field) from None
+    gm = collision_geometry(model, args["urdf"], args["package_dirs"], limits, field)
+    triangles = sum(int(getattr(go.geometry, "num_tris", 0)) for go in gm.geometryObjects)
+    if triangles > limits.max_collision_triangles:
+        raise InvalidInputError(
+            f"the collision meshes hold {triangles} triangles, more than "
+            f"{limits.max_collision_triangles} (DENAVIT_MAX_COLLISION_TRIANGLES): give the "
+            "links simpler collision meshes (their visual meshes may stay detailed)",
+            field,
+        )
+    return {"collision_triangles": triangles}
