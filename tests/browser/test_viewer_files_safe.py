@@ -143,8 +143,9 @@ def uploaded(live: Server) -> Iterator[Server]:
 class Opened:
     """What became of each URL the browser was asked to open: a download or a document."""
 
-    def __init__(self, tab: Tab) -> None:
-        self.tab = tab
+    def __init__(self, tab: Tab, live: Server) -> None:
+        self.tab, self.live = tab, live
+        self.log_start = len(live.log_lines())  # the server's log lines of this test follow
         self.downloads: list[str] = []
         self.requests: list[str] = []
         context = tab.page.context
@@ -177,9 +178,9 @@ class Opened:
         raise AssertionError(f"{url} was neither downloaded nor shown")
 
 
-def open_viewer_page(tab: Tab) -> Opened:
+def open_viewer_page(tab: Tab, live: Server) -> Opened:
     """The viewer on the scripted robot (the origin has a page and storage), recording."""
-    opened = Opened(tab)
+    opened = Opened(tab, live)
     tab.goto(f"/viewer/{ROBOT}")
     wait_idle(tab)
     tab.page.evaluate(
@@ -188,7 +189,7 @@ def open_viewer_page(tab: Tab) -> Opened:
     return opened
 
 
-def assert_no_trace(tab: Tab, opened: Opened, live: Server) -> None:
+def assert_no_trace(tab: Tab, opened: Opened) -> None:
     page = tab.page
     seen = page.evaluate(
         "[document.title, Object.keys(localStorage), Object.keys(sessionStorage), "
@@ -196,42 +197,84 @@ def assert_no_trace(tab: Tab, opened: Opened, live: Server) -> None:
     )
     assert "stolen" not in seen, seen
     assert not [u for u in opened.requests if "/stolen/" in u]
-    assert not [line for line in live.log_lines() if "/stolen/" in str(line.get("path"))]
+    logged = opened.live.log_lines()[opened.log_start :]
+    assert not [line for line in logged if "/stolen/" in str(line.get("path"))]
 
 
-@pytest.mark.parametrize("how", ["tab", "iframe", "object", "popup"])
-def test_scripts_in_uploaded_files_never_run(page: Tab, uploaded: Server, how: str) -> None:
-    opened = open_viewer_page(page)
+def strip_header(tab: Tab, name: str) -> None:
+    """Drop header ``name`` from every answer of the robots' routes the tab's pages get."""
+
+    def without(route) -> None:
+        response = route.fetch()
+        headers = {k: v for k, v in response.headers.items() if k.lower() != name}
+        route.fulfill(response=response, headers=headers)
+
+    tab.page.route("**/robots/**", without)  # after the Tab's own route: it comes first
+    tab.page.context.route("**/robots/**", without)  # new tabs and popups
+
+
+def open_every_file(tab: Tab, opened: Opened, how: str) -> dict[str, str]:
+    """Open each scripted URL ``how``; what became of each (see :meth:`Opened.settle`)."""
     outcomes = {}
     for path in URLS:
-        url = page.url + path
+        url = tab.url + path
         if how == "tab":
-            tab = page.page.context.new_page()
+            other = tab.page.context.new_page()
             try:
-                tab.goto(url, wait_until="load")
+                other.goto(url, wait_until="load")
             except PlaywrightError as exc:
                 if "Download is starting" not in str(exc):
                     raise
                 opened.downloads.append(url)
-            outcomes[path] = opened.settle(url, [tab])
-            tab.close()
+            outcomes[path] = opened.settle(url, [other])
+            other.close()
         elif how == "popup":
-            with page.page.context.expect_page() as info:
-                page.page.evaluate("(u) => { window.open(u); }", path)
+            with tab.page.context.expect_page() as info:
+                tab.page.evaluate("(u) => { window.open(u); }", path)
             outcomes[path] = opened.settle(url, [info.value])
         else:
             attribute = "data" if how == "object" else "src"
-            page.page.evaluate(
+            tab.page.evaluate(
                 """([tag, attribute, u]) => { const e = document.createElement(tag);
                      e[attribute] = u; document.body.append(e); }""",
                 [how, attribute, path],
             )
-            outcomes[path] = opened.settle(url, [page.page])
-    print(how, outcomes)  # which answers the browser rendered (-s shows them)
-    # The documents of the tab and the popups are closed or read: the viewer's own page,
-    # the browser's requests and the server's log hold no trace of any script.
-    assert_no_trace(page, opened, uploaded)
+            outcomes[path] = opened.settle(url, [tab.page])
+    return outcomes
+
+
+@pytest.mark.parametrize("how", ["tab", "iframe", "object", "popup"])
+def test_scripts_in_uploaded_files_never_run(page: Tab, uploaded: Server, how: str) -> None:
+    opened = open_viewer_page(page, uploaded)
+    outcomes = open_every_file(page, opened, how)
+    # Saved, never shown: no document of the service's origin holds what a client sent.
+    assert set(outcomes.values()) == {"download"}, outcomes
+    # The viewer's own page, the browser's requests and the server's log hold no trace.
+    assert_no_trace(page, opened)
     assert page.page_errors == [] and page.external == []
+
+
+@pytest.mark.parametrize("how", ["tab", "iframe"])
+@pytest.mark.parametrize("dropped", ["content-disposition", "content-security-policy"])
+def test_each_header_alone_keeps_the_scripts_from_running(
+    page: Tab, uploaded: Server, how: str, dropped: str
+) -> None:
+    """Two layers, each enough on its own: a client that loses one header is still safe.
+
+    Without ``Content-Disposition`` (a browser or a proxy that ignores or drops it), the
+    XML documents are shown, but in the opaque origin of the CSP sandbox: no storage, no
+    script. Without the CSP, the attachment alone keeps every file from being shown.
+    """
+    strip_header(page, dropped)
+    opened = open_viewer_page(page, uploaded)
+    outcomes = open_every_file(page, opened, how)
+    if dropped == "content-disposition":
+        shown = {p: o for p, o in outcomes.items() if o != "download"}
+        assert shown, "nothing was shown: the sandbox was not put to the test"
+        assert set(shown.values()) == {"document (opaque: SecurityError)"}, shown
+    else:
+        assert set(outcomes.values()) == {"download"}, outcomes
+    assert_no_trace(page, opened)
 
 
 def sha256_in_page(tab: Tab, path: str) -> str:
@@ -246,7 +289,7 @@ def sha256_in_page(tab: Tab, path: str) -> str:
 def test_viewer_draws_the_package_and_files_are_unchanged(page: Tab, uploaded: Server) -> None:
     headers: dict[str, dict[str, str]] = {}
     page.page.on("response", lambda r: headers.setdefault(r.url, r.headers))
-    open_viewer_page(page)
+    open_viewer_page(page, uploaded)
     stats = page.page.evaluate("denavit.viewer.robot.stats")
     assert (stats["meshes"], stats["loaded"], stats["failed"]) == (1, 1, 0), stats
     triangles = page.page.evaluate(
