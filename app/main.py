@@ -5,7 +5,8 @@ naming the variable (see :mod:`app.settings`).
 
 Middleware, outermost first (all pure ASGI, see docs/deployment.md):
 
-1. :class:`~app.observability.ObservabilityMiddleware` — request id, metrics, access log;
+1. :class:`~app.observability.ObservabilityMiddleware` — request id, metrics, access log,
+   ``X-Content-Type-Options: nosniff`` on every answer;
 2. :class:`~app.guard.ErrorGuardMiddleware` — 500 problem for a bug, 503 for a request cut
    off by the shutdown; the connection stays usable;
 3. CORS, only when ``DENAVIT_CORS_ORIGINS`` is set;

@@ -41,6 +41,7 @@ _TITLES = {
     409: "Conflict",
     413: "Content Too Large",
     415: "Unsupported Media Type",
+    416: "Range Not Satisfiable",
     422: "Unprocessable Content",
     426: "Upgrade Required",
     500: "Internal Server Error",

@@ -14,7 +14,7 @@ import orjson
 from fastapi import APIRouter, Depends, Request
 from pydantic import Field
 from starlette.datastructures import UploadFile
-from starlette.responses import FileResponse, Response
+from starlette.responses import Response
 
 from app.api.body import body_schema, read_capped, validate_body
 from app.api.deps import RegistryDep
@@ -23,6 +23,7 @@ from app.api.offload import offload_upload
 from app.api.robots import _WRITE_ERRORS, RobotDetail, _created, robot_detail
 from app.api.schemas import RobotId, Schema, Text
 from app.api.security import require_token
+from app.api.untrusted import OPENAPI_HEADERS, UntrustedFileResponse
 from app.documents.xacro import check_xacro_args
 from app.kinematics.errors import InvalidInputError
 from app.registry import Registry
@@ -44,6 +45,8 @@ CONTENT_TYPES = {
     ".xml": "application/xml",
     ".srdf": "application/xml",
 }
+#: The longest file name (one path segment) a file system stores, in bytes (Linux NAME_MAX).
+MAX_NAME_BYTES = 255
 _TEXT_FIELDS = ("name", "description", "srdf", "xacro_args", "ee_frame", "summary")
 
 
@@ -207,9 +210,13 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
         200: {
             "content": {"application/octet-stream": {"schema": {"type": "string"}}},
             "description": "The file (model/stl, model/vnd.collada+xml, model/obj, image/png, "
-            "image/jpeg, or application/octet-stream).",
+            "image/jpeg, application/xml, or application/octet-stream), as a download.",
+            "headers": OPENAPI_HEADERS,
         },
+        206: {"description": "The byte ranges asked for by `Range`, with the same headers."},
+        400: {**ERROR_RESPONSES[400], "description": "A malformed `Range` header."},
         404: {**ERROR_RESPONSES[404], "description": "Unknown robot, or no such file."},
+        416: {**ERROR_RESPONSES[400], "description": "A `Range` outside the file."},
         422: ERROR_RESPONSES[422],
     },
 )
@@ -219,8 +226,17 @@ def get_robot_file(robot_id: RobotId, path: str, request: Request, reg: Registry
     For a package robot, ``path`` is the file's path inside the uploaded archive (the URDF
     names it ``package://files/<path>``); for a catalog robot, the path inside its
     example-robot-data folder (``package://example-robot-data/robots/<folder>/<path>``).
-    GET /robots/{robot_id} gives this mapping in ``files``. 404 for a missing file or a
-    robot without files; 422 for a path with ``..``, ``.``, empty segments or backslashes.
+    GET /robots/{robot_id} gives this mapping in ``files``. 404 for a missing file, a robot
+    without files, or a path the file system cannot hold (a segment over 255 bytes); 422
+    for a path with ``..``, ``.``, empty segments or backslashes.
+
+    The files are the client's, served as it sent them: every answer carries
+    ``Content-Security-Policy: default-src 'none'; sandbox`` and ``X-Content-Type-Options:
+    nosniff``, and every type but image/png and image/jpeg ``Content-Disposition:
+    attachment``, so that a browser never runs a script a file holds (an XHTML, SVG or
+    HTML document) in the service's origin. Viewers load them with fetch/XHR or ``<img>``,
+    which ignore the disposition. ``Range`` is honoured (206); a malformed one is a 400, one
+    outside the file a 416, both naming ``range``.
     """
     located = reg.files_root(robot_id)
     parts = path.split("/")
@@ -235,9 +251,15 @@ def get_robot_file(robot_id: RobotId, path: str, request: Request, reg: Registry
     )
     if located is None:
         return missing
+    if any(len(p.encode("utf-8", "replace")) > MAX_NAME_BYTES for p in parts):
+        return missing  # no file system stores such a name
     root = located[0].resolve()
     file = root.joinpath(*parts)
-    if not file.resolve().is_relative_to(root) or file.is_symlink() or not file.is_file():
+    try:
+        if not file.resolve().is_relative_to(root) or file.is_symlink() or not file.is_file():
+            return missing
+        stat_result = file.stat()
+    except OSError:  # a path the OS refuses (too long, too deep, unreadable): not a file here
         return missing
     media = CONTENT_TYPES.get(file.suffix.lower(), "application/octet-stream")
-    return FileResponse(file, media_type=media)
+    return UntrustedFileResponse(file, stat_result, media)

@@ -25,6 +25,7 @@ from app.api.responses import ORJSONResponse
 from app.api.schemas import RobotId, Schema, Text, Vec3Out
 from app.api.security import require_token
 from app.api.semantics import EndEffectorOut, GroupOut, NamedStateOut, semantics_detail
+from app.api.untrusted import OPENAPI_HEADERS, document_headers
 from app.documents.dh import MAX_DH_DOCUMENT_BYTES, MalformedDocumentError, parse_dh_document
 from app.kinematics.collision_pairs import collision_link_pairs
 from app.kinematics.models import RobotModel
@@ -435,7 +436,8 @@ def get_robot(robot_id: RobotId, reg: RegistryDep) -> ORJSONResponse:
     responses={
         200: {
             "content": {"application/xml": {"schema": {"type": "string"}}},
-            "description": "URDF",
+            "description": "URDF, as a download (`<robot_id>.urdf`).",
+            "headers": OPENAPI_HEADERS,
         },
         404: ERROR_RESPONSES[404],
         422: ERROR_RESPONSES[422],
@@ -443,8 +445,16 @@ def get_robot(robot_id: RobotId, reg: RegistryDep) -> ORJSONResponse:
 )
 def get_robot_urdf(robot_id: RobotId, reg: RegistryDep) -> Response:
     """The robot's URDF: the catalog file, the uploaded text, or the one generated from a
-    DH table (links ``dh_0`` … ``dh_n`` and ``tool``; SI units)."""
-    return Response(reg.urdf_text(robot_id), media_type="application/xml")
+    DH table (links ``dh_0`` … ``dh_n`` and ``tool``; SI units).
+
+    The uploaded text is served as it was sent, so the answer is a download that a browser
+    never runs: ``Content-Disposition: attachment; filename="<robot_id>.urdf"`` and
+    ``Content-Security-Policy: default-src 'none'; sandbox``."""
+    return Response(
+        reg.urdf_text(robot_id),
+        media_type="application/xml",
+        headers=document_headers(f"{robot_id}.urdf", "application/xml"),
+    )
 
 
 @router.get(
@@ -460,7 +470,8 @@ def get_robot_urdf(robot_id: RobotId, reg: RegistryDep) -> Response:
 def get_robot_dh(robot_id: RobotId, request: Request, reg: RegistryDep) -> Response:
     """The DH table a robot was built from, in SI units (m, rad) as validated on import.
 
-    JSON by default; YAML when the ``Accept`` header asks for ``application/yaml``. 404 for
+    JSON by default; YAML when the ``Accept`` header asks for ``application/yaml``, as a
+    download (``<robot_id>.yaml``, the headers of GET /robots/{robot_id}/urdf). 404 for
     robots that were not built from a DH table (their URDF is at /robots/{robot_id}/urdf).
     """
     table = reg.dh_table(robot_id)
@@ -479,5 +490,6 @@ def get_robot_dh(robot_id: RobotId, request: Request, reg: RegistryDep) -> Respo
         return Response(
             yaml.safe_dump(doc, sort_keys=False, allow_unicode=True),
             media_type="application/yaml",
+            headers=document_headers(f"{robot_id}.yaml", "application/yaml"),
         )
     return ORJSONResponse(doc)

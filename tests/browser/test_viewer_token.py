@@ -2,7 +2,9 @@
 
 Reads work without a token; a write from the page (building a reachability map) is
 refused with the API's problem shown, until the token is typed into the page's field.
-The token travels only in the Authorization header, never in a URL.
+The token travels only in the Authorization header, never in a URL, and is kept nowhere
+another script of the origin could read it: not in the field (emptied once read), not in
+sessionStorage, localStorage or a cookie. "Clear" forgets it; so does a reload.
 """
 
 from __future__ import annotations
@@ -61,8 +63,29 @@ def test_writes_need_the_token_typed_into_the_page(page: Tab) -> None:
     assert page.page.evaluate("denavit.panels.reachability.shown.map_id") == maps[0]["map_id"]
     assert authorizations == [None, f"Bearer {TOKEN}"]
     assert not [u for u in urls if TOKEN in u]
-    assert page.page.evaluate("sessionStorage.getItem('denavit-token')") == TOKEN
+    # Held by the page's script only: the field is empty and says a token is set.
+    assert page.page.input_value("#token") == ""
+    assert page.page.inner_text("#token-state") == "token set"
+    kept = page.page.evaluate(
+        """[sessionStorage.length, localStorage.length, document.cookie,
+            JSON.stringify({...sessionStorage}), JSON.stringify({...localStorage})]"""
+    )
+    assert kept[:2] == [0, 0] and TOKEN not in "".join(map(str, kept)), kept
     page.shot("built-map")
-    # The browser logs the refused request; nothing else went wrong.
+
+    page.page.click("#token-clear")  # forgotten: the next write goes without it
+    assert page.page.inner_text("#token-state") == "no token"
+    build_in_page(page)
+    assert page.page.inner_text("#status").startswith("401: authorization:")
+    page.page.fill("#token", TOKEN)
+    page.page.dispatch_event("#token", "change")
+    page.page.reload()  # a reload asks for the token again
+    wait_idle(page)
+    assert page.page.text_content("#token-state") == "no token"  # in the closed box
+    build_in_page(page)
+    assert page.page.inner_text("#status").startswith("401: authorization:")
+    assert authorizations == [None, f"Bearer {TOKEN}", None, None]
+    assert not [u for u in urls if TOKEN in u]
+    # The browser logs the refused requests; nothing else went wrong.
     assert page.page_errors == [] and page.external == []
     assert all("status of 401" in e for e in page.console_errors), page.console_errors
