@@ -31,7 +31,7 @@ from app.catalog import DH_EE_FRAME, erd_share_dir, load_catalog, load_dh_builti
 from app.documents.archive import unpack_archive
 from app.documents.dh import MAX_DH_JOINTS, dh_error
 from app.documents.limits import UploadLimits
-from app.documents.mesh_check import check_meshes
+from app.documents.mesh_check import CHECKED_KEY, check_meshes, check_stored_meshes
 from app.documents.package import (
     CATALOG_PACKAGE,
     FILES_PREFIX,
@@ -220,6 +220,8 @@ class Registry:
             dirs = [str(erd_share_dir())]
             if (stored.path / PACKAGE_DIR).is_dir():
                 dirs.insert(0, str(stored.path))  # package://files/... → <robot>/files/...
+            limits = self.limits
+            check_stored_meshes(stored.id, urdf, meta, dirs, limits.mesh, limits.parse)
             robot = RobotModel(
                 stored.id,
                 urdf,
@@ -377,7 +379,7 @@ class Registry:
             package_dirs=[str(erd_share_dir())],
         )
         dirs = [str(erd_share_dir())]
-        check_meshes(urdf, meshes, dirs, self.limits.mesh, self.limits.parse, "urdf")
+        triangles = check_meshes(urdf, meshes, dirs, self.limits.mesh, self.limits.parse, "urdf")
         robot.mesh_limits = self.limits.mesh
         meta = {
             "name": robot_id,
@@ -385,6 +387,7 @@ class Registry:
             "description": description,
             "ee_frame": robot.ee_frame,
             "joints": robot.n,
+            CHECKED_KEY: triangles,
         }
         files = {URDF_FILE: urdf.encode()}
         if srdf is not None:
@@ -442,7 +445,9 @@ class Registry:
             )
             dirs = [str(staging), str(erd_share_dir())]
             limits = self.limits
-            check_meshes(package.urdf, package.meshes, dirs, limits.mesh, limits.parse, "archive")
+            triangles = check_meshes(
+                package.urdf, package.meshes, dirs, limits.mesh, limits.parse, "archive"
+            )
             robot.package_dirs = [str(store.root / robot_id), str(erd_share_dir())]
             robot.mesh_limits = self.limits.mesh
             meta = {
@@ -451,6 +456,7 @@ class Registry:
                 "description": description,
                 "ee_frame": robot.ee_frame,
                 "joints": robot.n,
+                CHECKED_KEY: triangles,
             }
             files = {URDF_FILE: package.urdf.encode()}
             if package.srdf is not None:

@@ -21,8 +21,17 @@ from typing import Any
 import numpy as np
 
 from app.documents.sandbox import ChildLimits, run_child
+from app.documents.sandbox_child import progress
+from app.documents.urdf import resource_elements
 from app.kinematics.errors import InvalidInputError
-from app.kinematics.meshes import MeshLimits, check_header, collision_geometry, load_mesh
+from app.kinematics.meshes import (
+    MeshLimits,
+    check_header,
+    collision_geometry,
+    load_mesh,
+    resolve_uri,
+)
+from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 
 def check_meshes(
@@ -64,6 +73,38 @@ def check_meshes(
     return int(result["collision_triangles"])
 
 
+#: The key of a stored robot's record that says its meshes passed :func:`check_meshes` (the
+#: number of collision triangles the loader counted).
+CHECKED_KEY = "collision_triangles"
+
+
+def check_stored_meshes(
+    robot_id: str,
+    urdf: str,
+    meta: Mapping[str, Any],
+    package_dirs: Sequence[str],
+    limits: MeshLimits,
+    child: ChildLimits,
+) -> None:
+    """A stored robot's meshes, checked in the child unless its record says they were.
+
+    A robot stored before these checks existed has no :data:`CHECKED_KEY`: before a worker
+    loads any of its meshes, they are read in the bounded child as at upload (the check is
+    not written back: each worker does it once, on first load). Raises
+    :class:`InvalidInputError` (field ``robot_id``) naming the mesh and the limit.
+    """
+    if isinstance(meta.get(CHECKED_KEY), int) or "<mesh" not in urdf:
+        return
+    meshes: dict[str, Path] = {}
+    for element, uri in resource_elements(parse_literal_xml(urdf, "urdf", TRUSTED)):
+        path = resolve_uri(uri, package_dirs) if element.tag == "mesh" else None
+        if element.tag == "mesh" and path is None:
+            raise InvalidInputError(f"robot {robot_id!r}: mesh {uri!r} is missing", "robot_id")
+        if path is not None:
+            meshes[uri] = path
+    check_meshes(urdf, meshes, package_dirs, limits, child, "robot_id")
+
+
 def check_in_child(args: dict[str, Any]) -> dict[str, int]:
     """The sandbox task (see the module docstring); runs in the child only."""
     import pinocchio as pin
@@ -71,8 +112,10 @@ def check_in_child(args: dict[str, Any]) -> dict[str, int]:
     limits = MeshLimits(**args["limits"])
     field = args["field"]
     for uri, path in args["meshes"].items():
+        progress(uri)
         check_header(Path(path), uri, limits, field, collision=False)
         load_mesh(Path(path), np.ones(3), uri, field)
+    progress("the collision geometry")
     try:
         model = pin.buildModelFromXML(args["urdf"], mimic=True)
     except (ValueError, RuntimeError) as exc:  # pragma: no cover - checked before

@@ -14,10 +14,11 @@ request in flight. The child:
   ``max_output_bytes``.
 
 It reads one JSON request on stdin and writes one JSON answer on stdout: ``{"result":
-...}`` or ``{"error": message, "field": field}``. Any other end (a signal, a limit, no
-answer) is an :class:`~app.kinematics.errors.InvalidInputError` naming the request field
-and the setting that bounds it. The waiting thread holds no lock and no GIL while the
-child works.
+...}`` or ``{"error": message, "field": field}``, after any number of progress lines
+``{"at": what}`` (what it reads now). Any other end (a signal, a limit, no answer) is an
+:class:`~app.kinematics.errors.InvalidInputError` naming the request field, the setting
+that bounds the child and, when the task said, what it was reading. The waiting thread
+holds no lock and no GIL while the child works.
 """
 
 from __future__ import annotations
@@ -97,6 +98,18 @@ def run_child(
         close_fds=True,
     )
     chunks: list[bytes] = []
+
+    def reading() -> str:
+        """`` while reading <what>`` from the last progress line, if any."""
+        for line in reversed(b"".join(chunks).split(b"\n")[:-1]):
+            try:
+                at = json.loads(line).get("at")
+            except (ValueError, AttributeError):
+                continue
+            if isinstance(at, str):
+                return f" while reading {at[:200]!r}"
+        return ""
+
     try:
         assert proc.stdin is not None and proc.stdout is not None
         proc.stdin.write(json.dumps(request).encode("utf-8", "surrogatepass"))
@@ -109,7 +122,7 @@ def run_child(
                 left = deadline - time.monotonic()
                 if left <= 0:
                     raise InvalidInputError(
-                        f"{what} took longer than {limits.timeout_s:g} s "
+                        f"{what} took longer than {limits.timeout_s:g} s{reading()} "
                         f"({limits.timeout_setting})",
                         field,
                     )
@@ -137,18 +150,18 @@ def run_child(
         if proc.stdout is not None:
             proc.stdout.close()
     try:
-        answer = json.loads(b"".join(chunks))
+        answer = json.loads(b"".join(chunks).rsplit(b"\n", 1)[-1])
     except ValueError:
         answer = None
     if not isinstance(answer, dict) or not ({"result", "error"} & answer.keys()):
         raise InvalidInputError(
-            f"{what} failed: it exceeded its memory or CPU limits (exit status "
+            f"{what} failed{reading()}: it exceeded its memory or CPU limits (exit status "
             f"{proc.returncode}; {limits.memory_setting})",
             field,
         )
     if "error" in answer:
         if answer.get("field") is None:  # not a refusal of the task's own: how it failed
             memory = f" ({limits.memory_setting})" if "memory" in str(answer["error"]) else ""
-            raise InvalidInputError(f"{what} failed: {answer['error']}{memory}", field)
+            raise InvalidInputError(f"{what} failed{reading()}: {answer['error']}{memory}", field)
         raise InvalidInputError(str(answer["error"]), str(answer["field"]))
     return answer["result"]

@@ -10,7 +10,8 @@ files), runs the task on the request's arguments and writes one JSON answer to s
 A task is a function of its JSON arguments returning a JSON value; it raises
 :class:`~app.kinematics.errors.InvalidInputError` to refuse the document (its message and
 field are the answer). Any other exception is the document's too: its type is named,
-never its text (which may hold paths of this host).
+never its text (which may hold paths of this host). A task may say what it is reading
+(:func:`progress`) so that a limit hit while reading it names it.
 """
 
 from __future__ import annotations
@@ -31,6 +32,12 @@ TASKS = {
     "mjcf": "app.documents.mjcf_urdf:convert_in_child",
     "meshes": "app.documents.mesh_check:check_in_child",
 }
+
+
+def progress(what: str) -> None:
+    """Tell the parent what this task reads now (one line on stdout, before the answer)."""
+    sys.stdout.buffer.write(json.dumps({"at": what}).encode("utf-8", "surrogatepass") + b"\n")
+    sys.stdout.buffer.flush()
 
 
 def limit_self(memory_bytes: int, cpu_s: int) -> None:

@@ -83,7 +83,9 @@ def load_mesh(path: Path, scale: np.ndarray, uri: str, field: str) -> coal.BVHMo
         )
     try:
         bvh = coal.MeshLoader().load(str(path), np.asarray(scale, dtype=float))
-    except (ValueError, RuntimeError, OSError, MemoryError):
+    except (ValueError, RuntimeError, OSError) as exc:
+        if "bad_alloc" in str(exc):  # coal's word for assimp's std::bad_alloc: a limit
+            raise MemoryError(f"mesh {uri!r}") from None
         raise InvalidInputError(
             f"mesh {uri!r} cannot be read: not a valid {suffix[1:].upper()} mesh", field
         ) from None

@@ -97,7 +97,7 @@ HOSTILE_MESHES = {
     "binary_stl_lies": ("m.stl", b"\0" * 80 + struct.pack("<I", 50_000_000), "m.stl"),
     "obj_mtllib_spaces": (
         "m.obj",
-        obj_cube(b"mtllib" + b" " * 40_000 + b"../../x.mtl" + b" " * 40_000 + b"\n"),
+        obj_cube(b"mtllib ../../x.mtl" + b" " * 40_000 + b"y.mtl\n"),
         "leaves the package",
     ),
 }
@@ -181,8 +181,7 @@ def mjcf_bush(bodies: int) -> bytes:
         for i in range(bodies)
     )
     return (
-        f'<mujoco model="bush"><worldbody><body name="root">{children}</body></worldbody>'
-        "</mujoco>"
+        f'<mujoco model="bush"><worldbody><body name="root">{children}</body></worldbody></mujoco>'
     ).encode()
 
 
@@ -358,7 +357,7 @@ def test_a_compute_request_never_waits_for_uploads(tmp_path: Path) -> None:
             resp = post_package(http, zip_bytes(files), "robot.urdf.xacro", name=f"slow{i}")
             results.append(resp.status_code)
 
-    with serve(tmp_path, env={"DENAVIT_XACRO_TIMEOUT_S": "10"}) as server:
+    with serve(tmp_path, env={"DENAVIT_XACRO_TIMEOUT_S": "5"}) as server:
         threads = [threading.Thread(target=slow_upload, args=(server, i)) for i in range(4)]
         for t in threads:
             t.start()
@@ -377,3 +376,64 @@ def test_a_compute_request_never_waits_for_uploads(tmp_path: Path) -> None:
         for t in threads:
             t.join()
     assert results == [422] * 4
+
+
+# ------------------------------------------------------------------------ triangles
+def ply_polygon(corners: int) -> bytes:
+    """One face of ``corners`` vertices (a fan of ``corners - 2`` triangles): its header
+    declares 1 face, the loader makes ``corners - 2`` triangles of it."""
+    import math
+
+    points = b"".join(
+        b"%r %r 0\n" % (math.cos(2 * math.pi * k / corners), math.sin(2 * math.pi * k / corners))
+        for k in range(corners)
+    )
+    face = b"%d " % corners + b" ".join(b"%d" % k for k in range(corners)) + b"\n"
+    return (
+        (
+            b"ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+            b"property float z\nelement face 1\nproperty list ushort int vertex_indices\n"
+            b"end_header\n" % corners
+        )
+        + points
+        + face
+    )
+
+
+def test_collision_triangles_are_counted_by_the_loader_not_the_header(tmp_path: Path) -> None:
+    """A PLY polygon declares one face and loads as 1498 triangles: refused past
+    DENAVIT_MAX_COLLISION_TRIANGLES (1000 here) at upload; a visual mesh is not bounded so."""
+    from app.main import create_app
+    from app.settings import Settings
+
+    settings = Settings(data_dir=tmp_path / "data", max_collision_triangles=1000)
+    with TestClient(create_app(settings), raise_server_exceptions=False) as client:
+        body = problem(post_package(client, mesh_package("m.ply", ply_polygon(1500))), 422)
+        assert "1498 triangles" in body["detail"], body
+        assert "DENAVIT_MAX_COLLISION_TRIANGLES" in body["detail"], body
+        fine = post_package(client, mesh_package("m.ply", ply_polygon(900)), name="fine")
+        assert fine.status_code == 201, fine.text
+
+
+def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path) -> None:
+    """A record without the loader's triangle count (stored before these checks), whose
+    collision mesh the header check alone would let through: read in the child on first
+    load, and refused (409) before any worker loads it."""
+    import json
+
+    from app.main import create_app
+    from app.settings import Settings
+
+    settings = Settings(data_dir=tmp_path / "data", max_collision_triangles=1000)
+    with TestClient(create_app(settings), raise_server_exceptions=False) as client:
+        assert post_package(client, mesh_package("m.ply", ply_triangle())).status_code == 201
+    record = settings.data_dir / "robots" / "lab"
+    meta = json.loads((record / "robot.json").read_text())
+    assert meta.pop("collision_triangles") == 1
+    (record / "robot.json").write_text(json.dumps(meta))
+    (record / "files" / "meshes" / "m.ply").write_bytes(ply_polygon(1500))
+    with TestClient(create_app(settings), raise_server_exceptions=False) as client:
+        for path in ("/robots/lab", "/robots/lab/collisions"):
+            resp = client.post(path, json={"q": [0.0]}) if "coll" in path else client.get(path)
+            body = problem(resp, 409, "robot_id")
+            assert "DENAVIT_MAX_COLLISION_TRIANGLES" in body["detail"], body
