@@ -115,7 +115,11 @@ def upload_limits(settings: Settings) -> UploadLimits:
         xacro=XacroLimits(
             settings.xacro_timeout_s, settings.xacro_memory_bytes, settings.xacro_max_output_chars
         ),
-        mesh=MeshLimits(settings.max_mesh_vertices, settings.max_collision_triangles),
+        mesh=MeshLimits(
+            settings.max_mesh_vertices,
+            settings.max_collision_triangles,
+            settings.max_collision_mesh_triangles,
+        ),
         parse=replace(
             PARSE_LIMITS,
             timeout_s=settings.parse_timeout_s,

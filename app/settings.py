@@ -109,9 +109,15 @@ class Settings(BaseSettings):
     max_collision_triangles: int = Field(
         200_000,
         ge=1000,
-        description="Most triangles of one uploaded robot's collision meshes, in total and per "
-        "file: each worker holds them (~0.7 KB each) and builds them mesh by mesh while "
-        "holding the GIL (~5-10 µs per triangle).",
+        description="Most triangles of one uploaded robot's collision meshes in total: each "
+        "worker holds them (~0.7 KB each).",
+    )
+    max_collision_mesh_triangles: int = Field(
+        100_000,
+        ge=1000,
+        description="Most triangles of one collision mesh file: a worker reads it while holding "
+        "the GIL (~10 µs per triangle, ~30 µs with every core busy), and uvicorn's supervisor "
+        "kills a worker that holds it for 5 s.",
     )
     parse_timeout_s: float = Field(
         60.0,

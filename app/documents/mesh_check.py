@@ -121,7 +121,17 @@ def check_in_child(args: dict[str, Any]) -> dict[str, int]:
     except (ValueError, RuntimeError) as exc:  # pragma: no cover - checked before
         raise InvalidInputError(f"the URDF cannot be read ({type(exc).__name__})", field) from None
     gm = collision_geometry(model, args["urdf"], args["package_dirs"], limits, field)
-    triangles = sum(int(getattr(go.geometry, "num_tris", 0)) for go in gm.geometryObjects)
+    triangles = 0
+    for go in gm.geometryObjects:
+        n = int(getattr(go.geometry, "num_tris", 0))
+        if n > limits.max_collision_mesh_triangles:
+            raise InvalidInputError(
+                f"the collision mesh of {go.name!r} has {n} triangles, more than "
+                f"{limits.max_collision_mesh_triangles} (DENAVIT_MAX_COLLISION_MESH_TRIANGLES): "
+                "give it a simpler collision mesh (its visual mesh may stay detailed)",
+                field,
+            )
+        triangles += n
     if triangles > limits.max_collision_triangles:
         raise InvalidInputError(
             f"the collision meshes hold {triangles} triangles, more than "

@@ -400,19 +400,52 @@ def ply_polygon(corners: int) -> bytes:
     )
 
 
-def test_collision_triangles_are_counted_by_the_loader_not_the_header(tmp_path: Path) -> None:
-    """A PLY polygon declares one face and loads as 1498 triangles: refused past
-    DENAVIT_MAX_COLLISION_TRIANGLES (1000 here) at upload; a visual mesh is not bounded so."""
+def binary_stl(triangles: int) -> bytes:
+    """A valid binary STL of ``triangles`` small triangles (fixed seed)."""
+    import numpy as np
+
+    records = np.zeros(triangles, dtype=[("data", "<f4", (12,)), ("attr", "<u2")])
+    records["data"] = np.random.default_rng(0).random((triangles, 12), dtype=np.float32) * 0.01
+    return b"\0" * 80 + struct.pack("<I", triangles) + records.tobytes()
+
+
+def test_collision_triangles_are_bounded_per_file_and_per_robot(tmp_path: Path) -> None:
+    """Per collision mesh file (what a worker reads in one hold of the GIL): declared faces
+    in the header, refused before any loader; triangles the loader makes of a polygon the
+    header calls one face, refused by the child. Per robot (what a worker holds): the
+    loader's total. Visual meshes are bounded by DENAVIT_MAX_MESH_VERTICES only."""
     from app.main import create_app
     from app.settings import Settings
 
-    settings = Settings(data_dir=tmp_path / "data", max_collision_triangles=1000)
+    settings = Settings(
+        data_dir=tmp_path / "data", max_collision_mesh_triangles=1000, max_collision_triangles=1500
+    )
+    per_file = "DENAVIT_MAX_COLLISION_MESH_TRIANGLES"
     with TestClient(create_app(settings), raise_server_exceptions=False) as client:
-        body = problem(post_package(client, mesh_package("m.ply", ply_polygon(1500))), 422)
-        assert "1498 triangles" in body["detail"], body
+        body = problem(post_package(client, mesh_package("m.stl", binary_stl(1001))), 422)
+        assert "declares 1001 faces" in body["detail"] and per_file in body["detail"], body
+        body = problem(post_package(client, mesh_package("m.ply", ply_polygon(1100))), 422)
+        assert "1098 triangles" in body["detail"] and per_file in body["detail"], body
+        two = mesh_urdf("meshes/a.stl").replace(
+            b"</robot>",
+            b'<link name="l2"><collision><geometry><mesh filename="meshes/b.stl"/></geometry>'
+            b'</collision></link><joint name="j2" type="fixed"><parent link="l1"/>'
+            b'<child link="l2"/></joint></robot>',
+        )
+        files = {"package.xml": TINY_XML, "robot.urdf": two}
+        files |= {"meshes/a.stl": binary_stl(800), "meshes/b.stl": binary_stl(801)}
+        body = problem(post_package(client, zip_bytes(files)), 422)
+        assert "1601 triangles" in body["detail"], body
         assert "DENAVIT_MAX_COLLISION_TRIANGLES" in body["detail"], body
-        fine = post_package(client, mesh_package("m.ply", ply_polygon(900)), name="fine")
-        assert fine.status_code == 201, fine.text
+        files["meshes/b.stl"] = binary_stl(700)
+        assert post_package(client, zip_bytes(files), name="fine").status_code == 201
+        visual = (
+            mesh_urdf("meshes/v.stl")
+            .replace(b"<collision>", b"<!--")
+            .replace(b"</collision>", b"-->")
+        )
+        files = {"package.xml": TINY_XML, "robot.urdf": visual, "meshes/v.stl": binary_stl(5000)}
+        assert post_package(client, zip_bytes(files), name="visual").status_code == 201
 
 
 def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path) -> None:
@@ -424,7 +457,7 @@ def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path
     from app.main import create_app
     from app.settings import Settings
 
-    settings = Settings(data_dir=tmp_path / "data", max_collision_triangles=1000)
+    settings = Settings(data_dir=tmp_path / "data", max_collision_mesh_triangles=1000)
     with TestClient(create_app(settings), raise_server_exceptions=False) as client:
         assert post_package(client, mesh_package("m.ply", ply_triangle())).status_code == 201
     record = settings.data_dir / "robots" / "lab"
@@ -436,4 +469,4 @@ def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path
         for path in ("/robots/lab", "/robots/lab/collisions"):
             resp = client.post(path, json={"q": [0.0]}) if "coll" in path else client.get(path)
             body = problem(resp, 409, "robot_id")
-            assert "DENAVIT_MAX_COLLISION_TRIANGLES" in body["detail"], body
+            assert "DENAVIT_MAX_COLLISION_MESH_TRIANGLES" in body["detail"], body
