@@ -14,6 +14,15 @@ uvloop event loop and httptools parser (the fastest uvicorn pair), uvicorn's acc
 (:mod:`app.observability` writes one JSON line per request instead, and every log line is
 JSON), ``timeout_graceful_shutdown`` so SIGTERM lets in-flight requests finish, and a
 listen backlog of 2048 for bursts.
+
+WebSockets (``WS /robots/{id}/stream``, docs/stream.md): uvicorn's ``websockets-sansio``
+implementation, named rather than left to ``ws="auto"`` (which picks it while the
+``websockets`` package is installed, else wsproto), without permessage-deflate and with
+``ws_max_size`` = ``DENAVIT_STREAM_MAX_MESSAGE_BYTES``. That implementation checks each
+frame's declared length against what is left of the limit for its message (fragments
+summed) before it reads the payload, and closes the socket with 1009 beyond it; with
+compression on, every message a socket read was inflated (up to the limit, 16 MiB by
+default) before the application could refuse it, authenticated or not.
 """
 
 from __future__ import annotations
@@ -47,6 +56,9 @@ def server_options(settings: Settings) -> dict[str, Any]:
         "timeout_graceful_shutdown": settings.graceful_timeout_s,
         "backlog": 2048,
         "server_header": False,
+        "ws": "websockets-sansio",
+        "ws_per_message_deflate": False,
+        "ws_max_size": settings.stream_max_message_bytes,
     }
 
 

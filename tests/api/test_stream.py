@@ -259,6 +259,36 @@ def test_the_token_is_required_when_set(stream_app) -> None:
             assert ws.receive_json()["poses"]
 
 
+def test_a_long_first_message_of_an_unauthenticated_socket_is_refused_unread(
+    stream_app, monkeypatch
+) -> None:
+    """Authentication by message: a first message over 64 KiB closes with 1008 before it
+    is parsed (an unauthenticated client cannot make the server build Python objects from
+    up to 1 MiB of JSON); a token message with a long id within it is accepted."""
+    from app.api import stream
+
+    parsed: list[int] = []
+    real = stream.parse_text
+
+    def counting(text, *args):
+        parsed.append(len(text))
+        return real(text, *args)
+
+    monkeypatch.setattr(stream, "parse_text", counting)
+    with TestClient(stream_app(api_token="s3cret")) as client:
+        with client.websocket_connect("/robots/ur5/stream") as ws:
+            send(ws, {"id": "x" * (64 << 10), "token": "s3cret"})
+            with pytest.raises(WebSocketDisconnect) as info:
+                ws.receive_json()
+        assert info.value.code == 1008
+        assert "authorization" in info.value.reason and "65536" in info.value.reason
+        assert parsed == []
+        with client.websocket_connect("/robots/ur5/stream") as ws:
+            send(ws, {"id": "x" * 60_000, "token": "s3cret"})
+            assert ws.receive_json()["authenticated"] is True
+        assert len(parsed) == 1
+
+
 # ------------------------------------------------------------------------ backpressure
 def test_a_client_that_stops_reading_is_no_longer_read(stream_app) -> None:
     """Raw ASGI: the client offers endless messages and never takes an answer (the first
