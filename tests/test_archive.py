@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import gzip
 import io
+import struct
 import tarfile
 import tracemalloc
 import zipfile
@@ -91,6 +92,26 @@ def test_too_many_entries_are_refused_before_anything_is_extracted(tmp_path: Pat
             zf.writestr(f"f{i}", b"")
     refused(io.BytesIO(buf.getvalue()), tmp_path, "100000 entries, more than 10000")
     assert list(tmp_path.iterdir()) == []
+
+
+def _central_directory_zip(entries: int) -> io.BytesIO:
+    """A zip of ``entries`` minimal central directory records (46 bytes and a one-byte
+    name each) and nothing else: no local header is ever read, it is refused first."""
+    record = struct.pack("<4s4B4HL2L5H2L", b"PK\x01\x02", *[20, 3, 20, 0], *[0] * 7, 1,
+                         *[0] * 6) + b"a"  # fmt: skip
+    directory = record * entries
+    end = struct.pack("<4s4H2LH", b"PK\x05\x06", 0, 0, 0xFFFF, 0xFFFF, len(directory), 30, 0)
+    return io.BytesIO(b"PK\x03\x04" + bytes(26) + directory + end)
+
+
+def test_a_huge_central_directory_is_counted_before_zipfile_reads_it(tmp_path: Path) -> None:
+    """8 MiB of 47-byte directory records: zipfile builds an object of ~350 bytes for each
+    before they could be counted (a 32 MiB upload peaked at 250 MiB); they are counted
+    from the records first, in about the directory's own size."""
+    source = _central_directory_zip((8 << 20) // 47)
+    size = len(source.getvalue())
+    peak = _peak_of_refusal(source, tmp_path, "178481 entries, more than 10000")
+    assert peak < size + (4 << 20), f"peak {peak / 2**20:.1f} MiB for {size} bytes"
 
 
 def test_tar_entries_are_counted_as_the_stream_is_read(tmp_path: Path) -> None:

@@ -25,6 +25,8 @@ than writing anything outside it or beyond the limits:
   headers of at most :data:`MAX_EXTENDED_HEADER_BYTES` and :data:`MAX_PAX_RECORDS` records
   in all (each member gets a copy of them). GNU sparse members (type ``S``, pax
   ``GNU.sparse.*`` records) are refused. Members are not kept once extracted;
+- a zip's central directory records are counted (not built) before zipfile reads them,
+  so a directory of a million tiny records costs its own size, not ~8 times it;
 - encrypted zip entries, unknown compression methods, corrupt or truncated data (CRC
   errors included) are refused.
 
@@ -39,6 +41,7 @@ import io
 import os
 import re
 import stat
+import struct
 import tarfile
 import zipfile
 import zlib
@@ -193,7 +196,39 @@ def _read_chunks(stream: BinaryIO) -> Iterator[bytes]:
 
 
 # ---------------------------------------------------------------------------- zip
+def _zip_entries(source: BinaryIO) -> int | None:
+    """The records of a zip's central directory, counted as zipfile walks them but without
+    building them (zipfile makes a ~350-byte object of each 46-byte record before they can
+    be counted); ``None`` when there is no directory to count (zipfile says why)."""
+    try:  # zipfile's own private reader of the end record, so both find the same directory
+        end = zipfile._EndRecData(source)
+    except OSError:
+        return None
+    if not end:
+        return None
+    size = end[zipfile._ECD_SIZE]
+    start = end[zipfile._ECD_LOCATION] - size  # where zipfile reads it (start_dir)
+    if end[zipfile._ECD_SIGNATURE] == zipfile.stringEndArchive64:
+        start -= zipfile.sizeEndCentDir64 + zipfile.sizeEndCentDir64Locator
+    if start < 0:
+        return None
+    source.seek(start)
+    directory = source.read(size)
+    count = pos = 0
+    while pos + 46 <= len(directory):  # fixed part: 46 bytes; name, extra, comment lengths
+        name, extra, comment = struct.unpack_from("<3H", directory, pos + 28)
+        pos += 46 + name + extra + comment
+        count += 1
+    return count
+
+
 def _unpack_zip(source: BinaryIO, out: _Extractor) -> None:
+    count = _zip_entries(source)
+    if count is not None and count > out.limits.max_files:
+        raise _refuse(
+            f"{count} entries, more than {out.limits.max_files} (DENAVIT_MAX_PACKAGE_FILES)"
+        )
+    source.seek(0)
     try:
         archive = zipfile.ZipFile(source)
     except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError, EOFError) as exc:
