@@ -43,6 +43,7 @@ _TITLES = {
     415: "Unsupported Media Type",
     422: "Unprocessable Content",
     426: "Upgrade Required",
+    431: "Request Header Fields Too Large",
     500: "Internal Server Error",
     503: "Service Unavailable",
 }

@@ -1,11 +1,12 @@
-"""WS /robots/{id}/stream on a live ``python -m app`` (2 workers, a token set): what an
-unauthenticated client can make a worker buffer.
+"""What an unauthenticated client can make a worker of a live ``python -m app`` (2 workers,
+a token set) buffer: WebSocket frames on ``WS /robots/{id}/stream``, HTTP request heads.
 
-The sockets are raw TCP connections that write WebSocket frames by hand, so a frame can
-claim compression (RSV1) or a length it never sends. The workers' memory is read from
-``/proc/<pid>/status``: ``VmRSS`` before and after, and ``VmHWM``, the peak, reset to the
-current size just before the sockets connect (``/proc/<pid>/clear_refs``), so a buffer
-that was freed again still counts. No timing: every socket is read until its close frame.
+The clients are raw TCP connections that write frames and requests by hand, so a frame can
+claim compression (RSV1) or a length it never sends, and a request head can go on without
+end. The workers' memory is read from ``/proc/<pid>/status``: ``VmRSS`` before and after,
+and ``VmHWM``, the peak, reset to the current size just before the clients connect
+(``/proc/<pid>/clear_refs``), so a buffer that was freed again still counts. No timing:
+every client reads until the server's close (or its answer).
 """
 
 from __future__ import annotations
@@ -35,8 +36,9 @@ TOKEN = "s3cret"
 PATH = "/robots/ur5/stream"
 Q_UR5 = [0.3, -1.1, 1.4, -0.6, 1.2, 0.4]
 LIMIT = 1 << 20  # DENAVIT_STREAM_MAX_MESSAGE_BYTES, the default
-#: What 12 hostile sockets may add to the two workers together, lasting or at the peak
-#: (generous: a socket may buffer one message of at most the limit, plus the reads).
+#: What the hostile clients of one test may add to the two workers together, lasting or
+#: at the peak (generous: a socket may buffer one message of at most the limit, a request
+#: head at most 1 MiB, plus the reads).
 BOUND = 64 << 20
 TEXT, CONT, CLOSE = 0x1, 0x0, 0x8
 
@@ -59,6 +61,21 @@ def _workers(server: Server) -> list[int]:
                 if b"spawn_main" in f.read():
                     pids.append(int(name))
     return sorted(pids)
+
+
+def _baseline(pids: list[int]) -> dict[int, int]:
+    """Each worker's ``VmRSS`` now; its peak (``VmHWM``) restarts from it."""
+    rss = {pid: _status(pid, "VmRSS") for pid in pids}
+    for pid in pids:
+        Path(f"/proc/{pid}/clear_refs").write_text("5")
+    return rss
+
+
+def _growth(rss: dict[int, int]) -> tuple[int, int]:
+    """What the workers added since :func:`_baseline`, together: (lasting, at the peak)."""
+    grown = sum(_status(pid, "VmRSS") - before for pid, before in rss.items())
+    peak = sum(_status(pid, "VmHWM") - before for pid, before in rss.items())
+    return grown, peak
 
 
 @pytest.fixture(scope="module")
@@ -201,9 +218,7 @@ def test_unauthenticated_sockets_cannot_make_workers_buffer(server: Server) -> N
         assert warm.close_code() == 1008
         warm.close()
     pids = _workers(server)
-    rss = {pid: _status(pid, "VmRSS") for pid in pids}
-    for pid in pids:  # the peak (VmHWM) restarts from the current size
-        Path(f"/proc/{pid}/clear_refs").write_text("5")
+    rss = _baseline(pids)
 
     sockets = [RawSocket(server.url) for _ in kinds]
     for ws, kind in zip(sockets, kinds, strict=True):
@@ -213,8 +228,7 @@ def test_unauthenticated_sockets_cannot_make_workers_buffer(server: Server) -> N
         codes.append(ws.close_code())
         ws.close()
 
-    grown = sum(_status(pid, "VmRSS") - rss[pid] for pid in pids)
-    peak = sum(_status(pid, "VmHWM") - rss[pid] for pid in pids)
+    grown, peak = _growth(rss)
     report = f"codes {codes}; RSS +{grown / 2**20:.1f} MiB, peak +{peak / 2**20:.1f} MiB"
     assert peak < BOUND and grown < BOUND, report
     assert not any("sec-websocket-extensions" in ws.headers for ws in sockets)
@@ -228,3 +242,103 @@ def test_unauthenticated_sockets_cannot_make_workers_buffer(server: Server) -> N
     ) as ws:
         ws.send(orjson.dumps({"id": 1, "op": "fk", "q": Q_UR5}).decode())
         assert orjson.loads(ws.recv(timeout=60))["poses"]
+
+
+# ----------------------------------------------------------------------- HTTP heads
+def _answer(url: str, head: bytes) -> tuple[int, dict]:
+    """Send ``head`` (a whole request head) on a new connection: the answer's status and
+    JSON body."""
+    host, port = url.removeprefix("http://").split(":")
+    with socket.create_connection((host, int(port)), timeout=60) as sock:  # backstop
+        sock.sendall(head)
+        buf = b""
+        while b"\r\n\r\n" not in buf:
+            chunk = sock.recv(65536)
+            assert chunk, f"closed without an answer: {buf!r}"
+            buf += chunk
+        top, body = buf.split(b"\r\n\r\n", 1)
+        lines = top.decode("latin-1").split("\r\n")
+        fields = {k.strip().lower(): v.strip() for k, v in (x.split(":", 1) for x in lines[1:])}
+        while len(body) < int(fields["content-length"]):
+            chunk = sock.recv(65536)
+            assert chunk, "closed before the end of the body"
+            body += chunk
+    return int(lines[0].split()[1]), orjson.loads(body)
+
+
+def _get(path: str, fields: bytes = b"") -> bytes:
+    return f"GET {path} HTTP/1.1\r\nHost: denavit\r\n".encode() + fields + b"\r\n"
+
+
+UPGRADE = (
+    b"Upgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Version: 13\r\n"
+    b"Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n"
+)
+
+
+@pytest.mark.parametrize(
+    ("head", "detail"),
+    [
+        (_get("/health", b"X-A: b\r\n" * 300), "more than 256 header fields"),
+        (_get(PATH, UPGRADE + b"X-A: b\r\n" * 300), "more than 256 header fields"),
+        (_get("/health", b"X-Big: " + b"a" * (65 << 10) + b"\r\n"), "exceed 65536 bytes"),
+        # the URL's last bytes pass the limit: the server has read all before it answers
+        (_get("/health?" + "a" * ((64 << 10) + 50)), "exceed 65536 bytes"),
+    ],
+    ids=["fields", "upgrade-fields", "one-field", "url"],
+)
+def test_a_request_head_over_the_bounds_is_431(server: Server, head: bytes, detail: str) -> None:
+    status, body = _answer(server.url, head)
+    assert (status, body["status"], body["field"]) == (431, 431, "headers"), body
+    assert detail in body["detail"] and body["detail"].startswith("headers:")
+
+
+def test_heads_within_the_bounds_and_large_bodies_are_served(server: Server) -> None:
+    """60 KiB of header fields, 200 of them: served; a 4 MiB body (read while the head
+    bound counts the reads of the socket: never mistaken for a head)."""
+    fields = (b"X-A: " + b"b" * 300 + b"\r\n") * 200
+    status, body = _answer(server.url, _get("/health", fields))
+    assert (status, body) == (200, {"status": "ok"})
+    payload = orjson.dumps({"q": Q_UR5}) + b" " * (4 << 20)
+    head = (
+        f"POST /robots/ur5/fk HTTP/1.1\r\nHost: denavit\r\nContent-Type: application/json\r\n"
+        f"Content-Length: {len(payload)}\r\n\r\n"
+    ).encode()
+    status, body = _answer(server.url, head + payload)
+    assert status == 200 and body["poses"], body
+
+
+def test_endless_request_heads_cannot_make_workers_buffer(server: Server) -> None:
+    """Two connections each send 64 MiB of a head that never ends: 8-byte header lines
+    (each a Python tuple of two bytes objects in uvicorn), one header line. Each is closed
+    after at most 1 MiB; the workers grow by less than :data:`BOUND`, the same workers
+    serve on.
+
+    Before the bound: the workers peaked ~+900 MiB and kept it."""
+    host, port = server.url.removeprefix("http://").split(":")
+    heads = {
+        "fields": (_get("/health")[:-2], b"X-A: b\r\n" * 8192),
+        "one line": (_get("/health")[:-2] + b"X-Big: ", b"a" * (64 << 10)),
+    }
+    _answer(server.url, _get("/health"))  # first use of the code in a worker
+    pids = _workers(server)
+    rss = _baseline(pids)
+    sent = {}
+    for kind, (start, chunk) in heads.items():
+        with socket.create_connection((host, int(port)), timeout=60) as sock:
+            sock.sendall(start)
+            sent[kind] = 0
+            with contextlib.suppress(OSError):  # the server closes the connection
+                while sent[kind] < 64 << 20:
+                    sock.sendall(chunk)
+                    sent[kind] += len(chunk)
+            with contextlib.suppress(OSError):
+                sock.shutdown(socket.SHUT_WR)
+                while sock.recv(65536):  # until the server has closed it
+                    pass
+    grown, peak = _growth(rss)
+    report = f"sent {sent}; RSS +{grown / 2**20:.1f} MiB, peak +{peak / 2**20:.1f} MiB"
+    assert peak < BOUND and grown < BOUND, report
+    assert all(n < 64 << 20 for n in sent.values()), report
+    assert _workers(server) == pids, report
+    assert _answer(server.url, _get("/health")) == (200, {"status": "ok"})
