@@ -10,10 +10,21 @@ The one entry point of ``make run`` and of the Docker image::
                                 # build); with the flag, exit 1 unless all came from it
 
 Server options and why (measured in docs/benchmarks.md, "Forward kinematics over HTTP"):
-uvloop event loop and httptools parser (the fastest uvicorn pair), uvicorn's access log off
+uvloop event loop and httptools parser (the fastest uvicorn pair; its protocol subclassed in
+:mod:`app.http_protocol` to bound request heads, which httptools buffers without limit: 431
+beyond 64 KiB or 256 fields), uvicorn's access log off
 (:mod:`app.observability` writes one JSON line per request instead, and every log line is
 JSON), ``timeout_graceful_shutdown`` so SIGTERM lets in-flight requests finish, and a
 listen backlog of 2048 for bursts.
+
+WebSockets (``WS /robots/{id}/stream``, docs/stream.md): uvicorn's ``websockets-sansio``
+implementation, named rather than left to ``ws="auto"`` (which picks it while the
+``websockets`` package is installed, else wsproto), without permessage-deflate and with
+``ws_max_size`` = ``DENAVIT_STREAM_MAX_MESSAGE_BYTES``. That implementation checks each
+frame's declared length against what is left of the limit for its message (fragments
+summed) before it reads the payload, and closes the socket with 1009 beyond it; with
+compression on, every message a socket read was inflated (up to the limit, 16 MiB by
+default) before the application could refuse it, authenticated or not.
 """
 
 from __future__ import annotations
@@ -40,13 +51,16 @@ def server_options(settings: Settings) -> dict[str, Any]:
         "port": settings.port,
         "workers": settings.workers,
         "loop": "uvloop",
-        "http": "httptools",
+        "http": "app.http_protocol:HttpToolsProtocol",  # httptools, request heads bounded
         "access_log": False,
         "log_level": settings.log_level,
         "log_config": logging_config(settings.log_level),
         "timeout_graceful_shutdown": settings.graceful_timeout_s,
         "backlog": 2048,
         "server_header": False,
+        "ws": "websockets-sansio",
+        "ws_per_message_deflate": False,
+        "ws_max_size": settings.stream_max_message_bytes,
     }
 
 

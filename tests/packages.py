@@ -3,11 +3,13 @@
 :func:`panda_files` lays the Panda out as a lab ships it: ``package.xml``, ``urdf/panda.urdf``
 naming its meshes by relative path (``../meshes/collision/link0.stl``), the meshes under
 ``meshes/``, and the SRDF; :func:`zip_bytes` and :func:`tar_gz_bytes` pack a
-name → bytes mapping (with hostile entries where a test asks for them).
+name → bytes mapping (with hostile entries where a test asks for them);
+:func:`huge_header_tgz` puts a tar extended header of hundreds of MiB in front of a tar.gz.
 """
 
 from __future__ import annotations
 
+import gzip
 import io
 import tarfile
 import zipfile
@@ -73,6 +75,27 @@ def tar_gz_bytes(files: Mapping[str, bytes], links: Mapping[str, tuple[bytes, st
             info.linkname = target
             tf.addfile(info)
     return buf.getvalue()
+
+
+#: 1 MiB of ``a`` as one gzip member: a gzip stream may be many members, so a tgz of
+#: hundreds of MiB is built (and stored) at ~1/1000 of its size without compressing it.
+A_MIB_GZ = gzip.compress(b"a" * (1 << 20), compresslevel=9, mtime=0)
+PAX_KINDS = (tarfile.XHDTYPE, tarfile.XGLTYPE, tarfile.SOLARIS_XHDTYPE)
+
+
+def huge_header_tgz(kind: bytes, size: int, after: bytes) -> bytes:
+    """A tar.gz whose first header is an extended header (tar type ``kind``: pax ``x``,
+    ``g``, Solaris ``X``, GNU ``L``, ``K``) of ``size`` bytes of ``a`` (for pax kinds one
+    record ``comment=aaa…``, as tarfile parses them), then the tar.gz ``after``; ~1/1000 of
+    ``size`` long."""
+    info = tarfile.TarInfo("././@PaxHeader" if kind in PAX_KINDS else "././@LongLink")
+    info.type, info.size = kind, size
+    record = kind in PAX_KINDS
+    prefix = f"{size} comment=".encode() if record else b""
+    mib, rest = divmod(size - len(prefix) - record, 1 << 20)
+    head = gzip.compress(info.tobuf(format=tarfile.USTAR_FORMAT) + prefix, mtime=0)
+    tail = gzip.compress(b"a" * rest + b"\n" * record + bytes(-size % 512), mtime=0)
+    return head + A_MIB_GZ * mib + tail + after
 
 
 def assert_fk_matches(

@@ -44,6 +44,7 @@ _TITLES = {
     416: "Range Not Satisfiable",
     422: "Unprocessable Content",
     426: "Upgrade Required",
+    431: "Request Header Fields Too Large",
     500: "Internal Server Error",
     503: "Service Unavailable",
 }

@@ -58,6 +58,11 @@ MESSAGE_TOO_BIG = 1009
 ROBOT_ERROR_BASE = 4000
 #: Seconds a socket that must authenticate by its first message may take to send it.
 AUTH_TIMEOUT_S = 10.0
+#: Largest first message of a socket that must authenticate by it ({"token": ...}, an id):
+#: a longer one is refused unread, so an unauthenticated client cannot make the server
+#: parse a message of up to the stream's limit (1 MiB of ``[{},{},...]`` is ~30 MB of
+#: Python objects).
+AUTH_MESSAGE_MAX_BYTES = 64 * 1024
 #: The options of binary ik frames before any JSON ik message: an ik message that sets none
 #: (the HTTP defaults; its placeholder target is never read).
 DEFAULT_IK = IKRequest.model_validate({"target": {"position": [0.0, 0.0, 0.0]}})
@@ -95,7 +100,22 @@ async def stream_over_http(robot_id: str) -> Response:
 
 @router.websocket("/robots/{robot_id}/stream")
 async def robot_stream(websocket: WebSocket, robot_id: str) -> None:
-    """FK, Jacobian and IK of one robot on a WebSocket (docs/stream.md)."""
+    """FK, Jacobian and IK of one robot on a WebSocket (docs/stream.md).
+
+    Notes
+    -----
+    A message over ``stream_max_message_bytes`` (1 MiB by default) closes the socket with
+    code 1009. Served by ``python -m app`` (``make run``, the image), uvicorn's WebSocket
+    layer has that limit as ``ws_max_size``: it closes the socket with 1009 (reason ``frame
+    with N bytes exceeds limit of L bytes``) as soon as a frame header declares more than
+    what is left of the limit for its message, before the payload is read, and answers to
+    messages still in flight are dropped. Where the server has a larger limit (another
+    server, the in-process test client), the size check below closes with 1009 (reason ``a
+    message of N bytes exceeds L``) after the answers to the earlier messages. Compression
+    (permessage-deflate) is not offered: frames with the RSV1 bit set close with 1002. An
+    unauthenticated socket's first message over :data:`AUTH_MESSAGE_MAX_BYTES` closes with
+    1008 unread.
+    """
     await websocket.accept()
     session = _Session(websocket, robot_id)
     try:
@@ -155,6 +175,9 @@ class _Session:
             raise _Close(POLICY_VIOLATION, detail) from None
         if first["type"] == "websocket.disconnect":
             raise WebSocketDisconnect(first.get("code", 1000))
+        if (size := _size(first)) > AUTH_MESSAGE_MAX_BYTES:
+            detail = f"authorization: a token message of {size} bytes exceeds "
+            raise _Close(POLICY_VIOLATION, detail + str(AUTH_MESSAGE_MAX_BYTES))
         text = first.get("text")
         try:
             message = None if text is None else parse_text(text, self.robot_id, self.path)

@@ -13,6 +13,7 @@ Binary frames are little-endian float64 arrays: ``[op code, id, payload...]``
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -93,8 +94,10 @@ def parse_text(text: str, robot_id: str, stream_path: str) -> Message:
         raise _invalid("message", "must be a JSON object", stream_path)
     msg_id = data.pop("id", None)
     if isinstance(msg_id, dict | list) or (isinstance(msg_id, int) and abs(msg_id) >= 2**63):
-        reason = "must be a JSON scalar (string, number within 64 bits, boolean or null)"
+        reason = "must be a JSON scalar (string, finite number within 64 bits, boolean or null)"
         raise _invalid("id", reason, stream_path)
+    if isinstance(msg_id, float) and not math.isfinite(msg_id):  # 1e999, NaN, Infinity
+        raise _invalid("id", f"must be a finite number: got {msg_id}", stream_path)
     if isinstance(msg_id, str):
         msg_id = printable(msg_id)  # echoed: a lone surrogate cannot be sent back
     op = data.pop("op", None)
@@ -128,7 +131,8 @@ def parse_binary(data: bytes, robot_id: str, stream_path: str) -> Message:
     Layout, little-endian float64: ``[op code, id, payload]``; payload ``q`` (one value per
     joint) for fk and jacobian, the target ``[x, y, z, qx, qy, qz, qw]`` for ik (checked by
     the core when solved; its other options are those of the socket's last valid JSON ik
-    message)."""
+    message). The id must be finite: a NaN or infinite id is an error naming ``id`` (the
+    JSON answers could not echo it)."""
     if len(data) % 8 or len(data) < 16:
         raise _invalid(
             "message",
@@ -137,6 +141,8 @@ def parse_binary(data: bytes, robot_id: str, stream_path: str) -> Message:
         )
     values = np.frombuffer(data, dtype=LITTLE_F8)
     code, msg_id = float(values[0]), float(values[1])
+    if not math.isfinite(msg_id):  # NaN or ±inf: not echoable (JSON has no such number)
+        raise _invalid("id", f"must be a finite number: got {msg_id}", stream_path)
     op = _OP_OF_CODE.get(code)
     if op is None:
         codes = ", ".join(f"{c} ({o})" for o, c in OP_CODES.items())

@@ -15,7 +15,18 @@ than writing anything outside it or beyond the limits:
   :attr:`ArchiveLimits.max_unpacked_bytes` in total. The bytes are counted as they are
   decompressed, never taken from the sizes an archive declares, so a zip bomb stops at the
   limit; a tar.gz is read as a stream through a counter bounding the whole decompressed
-  stream (headers included), so a huge pax header cannot be inflated into memory;
+  stream (headers included);
+- tar headers: every extended header (pax ``x`` and global ``g``, Solaris ``X``, GNU long
+  name ``L`` and long link ``K``) is refused by its declared size, over
+  :data:`MAX_EXTENDED_HEADER_BYTES`, before tarfile reads it (tarfile reads one whole,
+  then parses it); at most :data:`MAX_EXTENDED_CHAIN` of them in a row (tarfile reads them
+  recursively), pax headers of at most :data:`MAX_PAX_RECORDS` well-formed records (parsed
+  here in linear time: Python before 3.11.10 searches them in quadratic time), global
+  headers of at most :data:`MAX_EXTENDED_HEADER_BYTES` and :data:`MAX_PAX_RECORDS` records
+  in all (each member gets a copy of them). GNU sparse members (type ``S``, pax
+  ``GNU.sparse.*`` records) are refused. Members are not kept once extracted;
+- a zip's central directory records are counted (not built) before zipfile reads them,
+  so a directory of a million tiny records costs its own size, not ~8 times it;
 - encrypted zip entries, unknown compression methods, corrupt or truncated data (CRC
   errors included) are refused.
 
@@ -30,6 +41,7 @@ import io
 import os
 import re
 import stat
+import struct
 import tarfile
 import zipfile
 import zlib
@@ -51,6 +63,22 @@ _DRIVE = re.compile(r"^[A-Za-z]:")
 #: records) and padding per entry, and the end-of-archive record.
 _TAR_OVERHEAD_PER_ENTRY = 4096
 _TAR_OVERHEAD = 1 << 20
+#: Largest tar extended header (a name is at most MAX_NAME_BYTES; a pax header holds a few
+#: records: path, times, owner, extended attributes), and largest sum of the global ones.
+MAX_EXTENDED_HEADER_BYTES = 64 * 1024
+#: Most records in one pax header, and in the global ones together.
+MAX_PAX_RECORDS = 256
+#: Most extended headers before one member (a global header, a pax header, GNU long name
+#: and long link headers: 4 in practice).
+MAX_EXTENDED_CHAIN = 8
+_EXTENDED = {
+    tarfile.XHDTYPE: "pax extended header",
+    tarfile.XGLTYPE: "pax global header",
+    tarfile.SOLARIS_XHDTYPE: "Solaris extended header",
+    tarfile.GNUTYPE_LONGNAME: "GNU long name header",
+    tarfile.GNUTYPE_LONGLINK: "GNU long link header",
+}
+_PAX_LENGTH = re.compile(rb"([0-9]{1,20}) ")
 
 
 @dataclass(frozen=True, slots=True)
@@ -168,7 +196,39 @@ def _read_chunks(stream: BinaryIO) -> Iterator[bytes]:
 
 
 # ---------------------------------------------------------------------------- zip
+def _zip_entries(source: BinaryIO) -> int | None:
+    """The records of a zip's central directory, counted as zipfile walks them but without
+    building them (zipfile makes a ~350-byte object of each 46-byte record before they can
+    be counted); ``None`` when there is no directory to count (zipfile says why)."""
+    try:  # zipfile's own private reader of the end record, so both find the same directory
+        end = zipfile._EndRecData(source)
+    except OSError:
+        return None
+    if not end:
+        return None
+    size = end[zipfile._ECD_SIZE]
+    start = end[zipfile._ECD_LOCATION] - size  # where zipfile reads it (start_dir)
+    if end[zipfile._ECD_SIGNATURE] == zipfile.stringEndArchive64:
+        start -= zipfile.sizeEndCentDir64 + zipfile.sizeEndCentDir64Locator
+    if start < 0:
+        return None
+    source.seek(start)
+    directory = source.read(size)
+    count = pos = 0
+    while pos + 46 <= len(directory):  # fixed part: 46 bytes; name, extra, comment lengths
+        name, extra, comment = struct.unpack_from("<3H", directory, pos + 28)
+        pos += 46 + name + extra + comment
+        count += 1
+    return count
+
+
 def _unpack_zip(source: BinaryIO, out: _Extractor) -> None:
+    count = _zip_entries(source)
+    if count is not None and count > out.limits.max_files:
+        raise _refuse(
+            f"{count} entries, more than {out.limits.max_files} (DENAVIT_MAX_PACKAGE_FILES)"
+        )
+    source.seek(0)
     try:
         archive = zipfile.ZipFile(source)
     except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError, EOFError) as exc:
@@ -229,6 +289,114 @@ class _Budget(io.RawIOBase):
         return data
 
 
+class _TarInfo(tarfile.TarInfo):
+    """A tar header whose extended headers are bounded before tarfile reads them.
+
+    tarfile's documented extension point: ``_proc_member`` chooses how a header is
+    processed (``_proc_pax``, ``_proc_gnulong``, ``_proc_sparse``, ``_proc_builtin``), and
+    an extended header processes the header after it (recursively) before returning it.
+    """
+
+    def _proc_member(self, archive: tarfile.TarFile) -> tarfile.TarInfo:
+        assert isinstance(archive, _TarFile)
+        kind = _EXTENDED.get(self.type)
+        if kind is None:
+            archive.extended_chain = 0
+            if self.type == tarfile.GNUTYPE_SPARSE:
+                raise _refuse("GNU sparse members are not supported", self.name)
+            return super()._proc_member(archive)
+        archive.extended_chain += 1
+        if archive.extended_chain > MAX_EXTENDED_CHAIN:
+            raise _refuse(
+                f"{archive.extended_chain} extended headers in a row: the limit is "
+                f"{MAX_EXTENDED_CHAIN}",
+                self.name,
+            )
+        if not 0 <= self.size <= MAX_EXTENDED_HEADER_BYTES:
+            raise _refuse(
+                f"a {kind} of {self.size} bytes: the limit is {MAX_EXTENDED_HEADER_BYTES} bytes",
+                self.name,
+            )
+        if self.type == tarfile.XGLTYPE:
+            archive.global_bytes += self.size
+            if archive.global_bytes > MAX_EXTENDED_HEADER_BYTES:
+                raise _refuse(
+                    f"pax global headers of more than {MAX_EXTENDED_HEADER_BYTES} bytes in all",
+                    self.name,
+                )
+        return super()._proc_member(archive)  # _proc_pax below, or tarfile's _proc_gnulong
+
+    def _proc_pax(self, archive: tarfile.TarFile) -> tarfile.TarInfo:
+        """tarfile's ``_proc_pax`` (Python 3.11.10's strict parser) without GNU sparse
+        files, with the records bounded."""
+        buf = archive.fileobj.read(self._block(self.size))
+        raw = _pax_records(buf[: self.size], self.name)
+        encoding = "utf-8"  # the first hdrcharset record may say the names are raw bytes
+        charset = next((value for key, value in raw if key == b"hdrcharset"), None)
+        if charset == b"BINARY":
+            encoding = archive.encoding
+        records: dict[str, str] = {}
+        for raw_key, raw_value in raw:
+            key = self._decode_pax_field(raw_key, "utf-8", "utf-8", archive.errors)
+            if key.startswith("GNU.sparse."):
+                raise _refuse(f"GNU sparse files are not supported (pax record {key})", self.name)
+            if key in tarfile.PAX_NAME_FIELDS:
+                value = self._decode_pax_field(
+                    raw_value, encoding, archive.encoding, archive.errors
+                )
+            else:
+                value = self._decode_pax_field(raw_value, "utf-8", "utf-8", archive.errors)
+            records[key] = value
+        if self.type == tarfile.XGLTYPE:
+            pax_headers = archive.pax_headers  # for every later member
+        else:
+            pax_headers = archive.pax_headers.copy()
+        pax_headers.update(records)
+        if len(pax_headers) > MAX_PAX_RECORDS:
+            raise _refuse(f"more than {MAX_PAX_RECORDS} records in its pax headers", self.name)
+
+        try:
+            following = self.fromtarfile(archive)
+        except tarfile.HeaderError as exc:
+            raise tarfile.SubsequentHeaderError(str(exc)) from None
+        if self.type in (tarfile.XHDTYPE, tarfile.SOLARIS_XHDTYPE):
+            following._apply_pax_info(pax_headers, archive.encoding, archive.errors)
+            following.offset = self.offset
+            if "size" in pax_headers:  # the member's size replaced: where the next one starts
+                offset = following.offset_data
+                if following.isreg() or following.type not in tarfile.SUPPORTED_TYPES:
+                    offset += following._block(following.size)
+                archive.offset = offset
+        return following
+
+
+def _pax_records(buf: bytes, member: str) -> list[tuple[bytes, bytes]]:
+    """The records ``b"%d %s=%s\\n"`` of a pax header, in linear time; a record that is
+    not one, or more than :data:`MAX_PAX_RECORDS`, is refused (trailing NULs end them)."""
+    records, pos = [], 0
+    while pos < len(buf) and buf[pos] != 0:
+        match = _PAX_LENGTH.match(buf, pos)
+        end = pos + int(match[1]) - 1 if match else -1  # the record's last byte, a newline
+        if match is None or end < match.end() or end >= len(buf) or buf[end] != 0x0A:
+            raise _refuse(f"malformed pax record at byte {pos}", member)
+        key, equals, value = buf[match.end() : end].partition(b"=")
+        if not key or not equals:
+            raise _refuse(f"malformed pax record at byte {pos}", member)
+        records.append((key, value))
+        if len(records) > MAX_PAX_RECORDS:
+            raise _refuse(f"more than {MAX_PAX_RECORDS} records in its pax headers", member)
+        pos = end + 1
+    return records
+
+
+class _TarFile(tarfile.TarFile):
+    """tarfile reading with :class:`_TarInfo`, and what the bounds count across headers."""
+
+    tarinfo = _TarInfo
+    extended_chain = 0  # extended headers since the last member
+    global_bytes = 0  # bytes of pax global headers so far
+
+
 def _unpack_tar(source: BinaryIO, out: _Extractor, compressed: bool) -> None:
     inner: BinaryIO = gzip.GzipFile(fileobj=source, mode="rb") if compressed else source
     budget = _Budget(
@@ -238,8 +406,9 @@ def _unpack_tar(source: BinaryIO, out: _Extractor, compressed: bool) -> None:
         + _TAR_OVERHEAD,
     )
     try:
-        with tarfile.open(fileobj=budget, mode="r|") as archive:
-            for member in archive:
+        with _TarFile.open(fileobj=budget, mode="r|") as archive:
+            while (member := archive.next()) is not None:
+                archive.members.clear()  # a stream's members are kept, with their pax records
                 name = member.name
                 out.count()
                 if member.issym():
@@ -249,7 +418,7 @@ def _unpack_tar(source: BinaryIO, out: _Extractor, compressed: bool) -> None:
                 if member.isdir():
                     out.directory(name)
                 elif member.isreg():
-                    if member.size > out.limits.max_unpacked_bytes:
+                    if not 0 <= member.size <= out.limits.max_unpacked_bytes:
                         raise _refuse(
                             f"declares {member.size} bytes, more than "
                             f"{out.limits.max_unpacked_bytes} (DENAVIT_MAX_PACKAGE_UNPACKED_BYTES)",

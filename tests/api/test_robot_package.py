@@ -7,6 +7,7 @@ refused with nothing left in the data directory.
 
 from __future__ import annotations
 
+import gzip
 import io
 import tarfile
 import warnings
@@ -23,6 +24,7 @@ from tests.helpers import problem
 from tests.packages import (
     PANDA_DIR,
     assert_fk_matches,
+    huge_header_tgz,
     panda_files,
     panda_urdf,
     tar_gz_bytes,
@@ -244,6 +246,21 @@ def _zip_bomb() -> bytes:
     return buf.getvalue()
 
 
+def _tar_chain(n: int) -> bytes:
+    """The tiny package as a tar.gz whose first member follows ``n`` pax headers."""
+    buf = io.BytesIO()
+    with tarfile.open(fileobj=buf, mode="w:gz", format=tarfile.PAX_FORMAT) as tf:
+        for name, data in tiny_files().items():
+            info = tarfile.TarInfo(name)
+            info.size = len(data)
+            tf.addfile(info, io.BytesIO(data))
+    raw = gzip.decompress(buf.getvalue())
+    pax = tarfile.TarInfo("././@PaxHeader")
+    pax.type, pax.size = tarfile.XHDTYPE, 12
+    header = pax.tobuf(format=tarfile.USTAR_FORMAT) + b"12 comment=\n".ljust(512, b"\0")
+    return gzip.compress(header * n + raw, mtime=0)
+
+
 HOSTILE_ARCHIVES = {
     "zip slip": (lambda: _zip_with("../x.stl"), "'..'"),
     "zip slip deep": (lambda: _zip_with("meshes/../../x.stl"), "'..'"),
@@ -258,6 +275,13 @@ HOSTILE_ARCHIVES = {
     "duplicate": (_zip_duplicate, "twice"),
     "duplicate after dot": (lambda: _zip_with("./meshes/link0.stl"), "twice"),
     "zip bomb": (_zip_bomb, "more than"),
+    # 250 MiB of pax header in ~250 KB: refused by its size before it is read
+    "tar huge pax header": (
+        lambda: huge_header_tgz(tarfile.XHDTYPE, 250 << 20, tar_gz_bytes(tiny_files())),
+        "pax extended header of 262144000 bytes: the limit is 65536 bytes",
+    ),
+    # tarfile reads extended headers recursively: thousands in a row were a 500
+    "tar header chain": (lambda: _tar_chain(3000), "9 extended headers in a row"),
     "not an archive": (lambda: b"just text, no archive", "not a zip or tar.gz"),
     "corrupt zip": (lambda: zip_bytes(tiny_files())[:-300], "zip"),
 }

@@ -125,6 +125,11 @@ BAD = [
     ('{"id": 5, "op": "fkk", "q": [0]}', 422, "op", None),
     ('{"id": 6, "q": [0]}', 422, "op", None),
     ('{"id": [1], "op": "fk"}', 422, "id", None),
+    # what the JSON parser turns into inf or nan: not echoable, refused
+    ('{"id": 1e999, "op": "fk", "q": [0, 0, 0, 0, 0, 0]}', 422, "id", None),
+    ('{"id": -1e999, "op": "fk", "q": [0, 0, 0, 0, 0, 0]}', 422, "id", None),
+    ('{"id": NaN, "op": "fk", "q": [0, 0, 0, 0, 0, 0]}', 422, "id", None),
+    ('{"id": Infinity, "op": "fk", "q": [0, 0, 0, 0, 0, 0]}', 422, "id", None),
     ('{"id": 8, "op": "fk", "q": [1, "a", 0, 0, 0, 0]}', 422, "q.1", "fk"),
     ('{"id": 9, "op": "fk", "q": [0, 0, 0, 0, 0, 0], "frames": ["nope"]}', 422, "frames", "fk"),
     ('{"id": 10, "op": "jacobian", "q": [0, 0, 0], "bogus": 1}', 422, "bogus", "jacobian"),
@@ -170,6 +175,11 @@ def test_bad_messages_get_the_http_error_and_the_socket_stays_usable(client) -> 
         assert ws.receive_json()["error"]["field"] == "op"
         ws.send_bytes(np.array([1.0, 2.0, 0.0, np.nan], "<f8").tobytes())
         assert ws.receive_json()["error"]["field"] == "q.1"
+        for bad_id in (np.nan, np.inf, -np.inf):  # answered in JSON (text), naming the id
+            ws.send_bytes(np.array([1.0, bad_id, *Q_UR5], "<f8").tobytes())
+            err = ws.receive_json()
+            assert (err["id"], err["error"]["status"], err["error"]["field"]) == (None, 422, "id")
+            assert "finite" in err["error"]["detail"]
         send(ws, {"id": "ok", "op": "fk", "q": Q_UR5})
         assert ws.receive_json()["id"] == "ok"
 
@@ -247,6 +257,36 @@ def test_the_token_is_required_when_set(stream_app) -> None:
             assert ws.receive_json() == {"id": "a", "op": "auth", "authenticated": True}
             send(ws, fk)
             assert ws.receive_json()["poses"]
+
+
+def test_a_long_first_message_of_an_unauthenticated_socket_is_refused_unread(
+    stream_app, monkeypatch
+) -> None:
+    """Authentication by message: a first message over 64 KiB closes with 1008 before it
+    is parsed (an unauthenticated client cannot make the server build Python objects from
+    up to 1 MiB of JSON); a token message with a long id within it is accepted."""
+    from app.api import stream
+
+    parsed: list[int] = []
+    real = stream.parse_text
+
+    def counting(text, *args):
+        parsed.append(len(text))
+        return real(text, *args)
+
+    monkeypatch.setattr(stream, "parse_text", counting)
+    with TestClient(stream_app(api_token="s3cret")) as client:
+        with client.websocket_connect("/robots/ur5/stream") as ws:
+            send(ws, {"id": "x" * (64 << 10), "token": "s3cret"})
+            with pytest.raises(WebSocketDisconnect) as info:
+                ws.receive_json()
+        assert info.value.code == 1008
+        assert "authorization" in info.value.reason and "65536" in info.value.reason
+        assert parsed == []
+        with client.websocket_connect("/robots/ur5/stream") as ws:
+            send(ws, {"id": "x" * 60_000, "token": "s3cret"})
+            assert ws.receive_json()["authenticated"] is True
+        assert len(parsed) == 1
 
 
 # ------------------------------------------------------------------------ backpressure
