@@ -470,3 +470,71 @@ def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path
             resp = client.post(path, json={"q": [0.0]}) if "coll" in path else client.get(path)
             body = problem(resp, 409, "robot_id")
             assert "DENAVIT_MAX_COLLISION_MESH_TRIANGLES" in body["detail"], body
+
+
+# ------------------------------------------------------------------------ every finding, live
+def _deep_mjcf() -> bytes:
+    files = {
+        "arm.xml": b'<mujoco model="deep"><worldbody><body name="root">'
+        b'<include file="i0.xml"/></body></worldbody></mujoco>'
+    }
+    for i in range(60):
+        nest = "".join(f"<body name='b{i}_{k}'>" for k in range(19))
+        nest += f'<include file="i{i + 1}.xml"/>' if i < 59 else "<geom size='0.1'/>"
+        files[f"i{i}.xml"] = f"<mujoco>{nest}{'</body>' * 19}</mujoco>".encode()
+    return zip_bytes(files)
+
+
+def _round3_requests() -> dict[str, tuple[str, str, dict]]:
+    """name → (method, path, httpx keyword arguments) of the hostile requests of round 3
+    not sent by the tests above."""
+    import tarfile
+
+    from tests.packages import huge_header_tgz, tar_gz_bytes
+
+    def package(archive: bytes, description: str = "robot.urdf") -> dict:
+        return {
+            "data": {"name": "h", "description": description},
+            "files": {"archive": ("p.tgz", archive)},
+        }
+
+    tiny = {"package.xml": TINY_XML, "robot.urdf": mesh_urdf("meshes/m.stl")}
+    tiny["meshes/m.stl"] = LINK0
+    cube = mjcf_chain(2).replace(
+        b"<worldbody>",
+        b'<asset><texture name="s" type="skybox" fileright="../../etc/passwd"/></asset><worldbody>',
+    )
+    return {
+        "pax header of 250 MiB": (
+            "POST",
+            "/robots/package",
+            package(huge_header_tgz(tarfile.XHDTYPE, 250 << 20, tar_gz_bytes(tiny))),
+        ),
+        "obj mtllib behind a bare CR": (
+            "POST",
+            "/robots/package",
+            package(mesh_package("m.obj", obj_cube(b"mtllib a.mtl\rmtllib ../../../etc/passwd\n"))),
+        ),
+        "mjcf includes 1000 deep": ("POST", "/robots/package", package(_deep_mjcf(), "arm.xml")),
+        "mjcf cube texture": (
+            "POST",
+            "/robots/package",
+            package(zip_bytes({"a.xml": cube}), "a.xml"),
+        ),
+        "long path segment": ("GET", "/robots/panda/files/" + "a" * 300, {}),
+        "long path segment, package": ("GET", "/robots/nobody/files/" + "a" * 300 + "/b", {}),
+    }
+
+
+def test_every_round3_finding_leaves_the_workers_alive_and_small(live: Server) -> None:
+    """Each hostile request of round 3 not sent above, to the live 2-worker server: a 4xx
+    (never a 5xx or a dropped connection), the same worker PIDs, RSS growth bounded."""
+    pids = worker_pids(live)
+    rss = {pid: worker_rss_mb(pid) for pid in pids}
+    with httpx.Client(base_url=live.url, timeout=120) as http:
+        for name, (method, path, kwargs) in _round3_requests().items():
+            for _ in range(2):  # each worker should see one
+                resp = http.request(method, path, **kwargs)
+                assert 400 <= resp.status_code < 500, (name, resp.status_code, resp.text[:300])
+                assert resp.headers["content-type"].startswith("application/problem+json")
+            _assert_workers_alive(live, pids, rss)
