@@ -191,7 +191,7 @@ def test_mjcf_of_thousands_of_bodies_is_refused_before_pinocchio(client: TestCli
     assert "DENAVIT_MAX_URDF_JOINTS" in body["detail"], body
 
 
-def test_mjcf_includes_nested_deep_are_a_422(client: TestClient) -> None:
+def deep_mjcf() -> bytes:
     """60 includes, each 19 bodies deep inside the previous one's innermost body: every
     file is shallow, the merged model is 1000+ levels deep."""
     files = {
@@ -201,9 +201,12 @@ def test_mjcf_includes_nested_deep_are_a_422(client: TestClient) -> None:
     for i in range(60):
         nest = "".join(f"<body name='b{i}_{k}'>" for k in range(19))
         nest += f'<include file="i{i + 1}.xml"/>' if i < 59 else "<geom size='0.1'/>"
-        nest += "</body>" * 19
-        files[f"i{i}.xml"] = f"<mujoco>{nest}</mujoco>".encode()
-    body = problem(post_package(client, zip_bytes(files), "arm.xml"), 422, "description")
+        files[f"i{i}.xml"] = f"<mujoco>{nest}{'</body>' * 19}</mujoco>".encode()
+    return zip_bytes(files)
+
+
+def test_mjcf_includes_nested_deep_are_a_422(client: TestClient) -> None:
+    body = problem(post_package(client, deep_mjcf(), "arm.xml"), 422, "description")
     assert "DENAVIT_MAX_XML_DEPTH" in body["detail"], body
 
 
@@ -473,18 +476,6 @@ def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path
 
 
 # ------------------------------------------------------------------------ every finding, live
-def _deep_mjcf() -> bytes:
-    files = {
-        "arm.xml": b'<mujoco model="deep"><worldbody><body name="root">'
-        b'<include file="i0.xml"/></body></worldbody></mujoco>'
-    }
-    for i in range(60):
-        nest = "".join(f"<body name='b{i}_{k}'>" for k in range(19))
-        nest += f'<include file="i{i + 1}.xml"/>' if i < 59 else "<geom size='0.1'/>"
-        files[f"i{i}.xml"] = f"<mujoco>{nest}{'</body>' * 19}</mujoco>".encode()
-    return zip_bytes(files)
-
-
 def _round3_requests() -> dict[str, tuple[str, str, dict]]:
     """name → (method, path, httpx keyword arguments) of the hostile requests of round 3
     not sent by the tests above."""
@@ -515,7 +506,7 @@ def _round3_requests() -> dict[str, tuple[str, str, dict]]:
             "/robots/package",
             package(mesh_package("m.obj", obj_cube(b"mtllib a.mtl\rmtllib ../../../etc/passwd\n"))),
         ),
-        "mjcf includes 1000 deep": ("POST", "/robots/package", package(_deep_mjcf(), "arm.xml")),
+        "mjcf includes 1000 deep": ("POST", "/robots/package", package(deep_mjcf(), "arm.xml")),
         "mjcf cube texture": (
             "POST",
             "/robots/package",
