@@ -11,7 +11,7 @@ The one entry point of ``make run`` and of the Docker image::
 
 Server options and why (measured in docs/benchmarks.md, "Forward kinematics over HTTP"):
 uvloop event loop and httptools parser (the fastest uvicorn pair; its protocol subclassed in
-:mod:`app.http_protocol` to bound request heads, which httptools buffers without limit: 431
+:mod:`app.server.http_protocol` to bound request heads, which httptools buffers without limit: 431
 beyond 64 KiB or 256 fields), uvicorn's access log off
 (:mod:`app.observability` writes one JSON line per request instead, and every log line is
 JSON), ``timeout_graceful_shutdown`` so SIGTERM lets in-flight requests finish, and a
@@ -51,7 +51,7 @@ def server_options(settings: Settings) -> dict[str, Any]:
         "port": settings.port,
         "workers": settings.workers,
         "loop": "uvloop",
-        "http": "app.http_protocol:HttpToolsProtocol",  # httptools, request heads bounded
+        "http": "app.server.http_protocol:HttpToolsProtocol",  # httptools, request heads bounded
         "access_log": False,
         "log_level": settings.log_level,
         "log_config": logging_config(settings.log_level),

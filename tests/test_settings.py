@@ -158,7 +158,7 @@ def test_server_options_follow_the_settings(tmp_path) -> None:
     assert (opts["host"], opts["port"], opts["workers"]) == ("0.0.0.0", 8123, 4)
     assert opts["timeout_graceful_shutdown"] == 5
     assert opts["access_log"] is False  # replaced by the JSON access log
-    assert (opts["loop"], opts["http"]) == ("uvloop", "app.http_protocol:HttpToolsProtocol")
+    assert (opts["loop"], opts["http"]) == ("uvloop", "app.server.http_protocol:HttpToolsProtocol")
     # WebSockets: no compression, uvicorn's frame limit is the stream's message limit
     # (tests/api/test_memory_before_auth.py checks them on a live server)
     assert (opts["ws"], opts["ws_per_message_deflate"]) == ("websockets-sansio", False)
