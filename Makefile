@@ -39,11 +39,9 @@ image:
 	else podman build --format docker -t $(IMAGE) .; fi
 
 # Build the image with podman, run it for real and check it (root on Debian: see the
-# script's header). The workplace's ../shared/container-check.sh when there, else the copy
-# in .ci/ (the same file, unmodified).
-CONTAINER_CHECK = $(firstword $(wildcard ../shared/container-check.sh) .ci/container-check.sh)
+# script's header).
 container-check:
-	bash $(CONTAINER_CHECK)
+	bash .ci/container-check.sh
 
 # compose.yaml with podman-compose on the image container-check built (deploy/compose-check.sh).
 compose-check: install

@@ -8,7 +8,7 @@ Every measure here is computed from the *task Jacobian* ``J_t = J[rows][:, suppo
   [vx, vy, vz, ωx, ωy, ωz], reference ``world`` / ``local`` / ``world_spatial``);
 - ``rows`` are the task's rows: ``full`` (all six), ``translation`` (vx, vy, vz),
   ``rotation`` (ωx, ωy, ωz) or an explicit list such as ``["vx", "vy"]`` for a planar arm
-  (DOMAIN.md: robots with fewer than six joints use the task's rows only);
+  (robots with fewer than six joints use the task's rows only);
 - ``support`` are the joints that move the frame (:meth:`RobotModel.supporting_joints`, the
   frame's kinematic chain). Other joints give identically zero columns and are left out:
   a gripper finger does not make an arm redundant, nor does it make it singular.

@@ -1,4 +1,4 @@
-"""Untrusted documents and stored records (issue 10): nothing a client uploads may poison
+"""Untrusted documents and stored records : nothing a client uploads may poison
 the store, escape the package roots, crash a listing or stall a worker."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""IK batches with ``chain_seeds: false`` spread over worker processes (issue 14, item 4).
+"""IK batches with ``chain_seeds: false`` spread over worker processes.
 
 The reference is the core's single-target solve, called here target by target with the
 documented per-target generator (child ``i`` of ``SeedSequence(random_seed)``): a batch must

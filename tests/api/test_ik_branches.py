@@ -1,6 +1,6 @@
-"""IK over HTTP: branches, rank_by, typed failures, solver version and determinism (issue 13).
+"""IK over HTTP: branches, rank_by, typed failures, solver version and determinism.
 
-References are independent of the solver: the planar arm's textbook closed form (DOMAIN.md),
+References are independent of the solver: the planar arm's textbook closed form,
 the /manipulability and /collisions endpoints, and a live two-worker server for
 determinism. Budgets are iteration caps with generous time limits.
 """
@@ -27,7 +27,7 @@ CAPPED = {"timeout_ms": 1000, "max_iterations": 2000}
 
 
 def _planar_solutions(x: float, y: float) -> list[tuple[float, float]]:
-    """Both elbows of the planar 2-link arm (DOMAIN.md): θ2 = ±acos(c2)."""
+    """Both elbows of the planar 2-link arm (textbook closed form): θ2 = ±acos(c2)."""
     return planar2_elbows(x, y, L1, L2)
 
 

@@ -1,4 +1,4 @@
-"""Hostile description packages (hardening round 3): each finding's reproducer, and a variant.
+"""Hostile description packages and requests: each attack's reproducer, and a variant.
 
 Every document here once cost a worker its life, a gigabyte, a host file or a 500:
 
@@ -476,8 +476,8 @@ def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path
 
 
 # ------------------------------------------------------------------------ every finding, live
-def _round3_requests() -> dict[str, tuple[str, str, dict]]:
-    """name → (method, path, httpx keyword arguments) of the hostile requests of round 3
+def _hostile_requests() -> dict[str, tuple[str, str, dict]]:
+    """name → (method, path, httpx keyword arguments) of the hostile requests
     not sent by the tests above."""
     import tarfile
 
@@ -517,13 +517,13 @@ def _round3_requests() -> dict[str, tuple[str, str, dict]]:
     }
 
 
-def test_every_round3_finding_leaves_the_workers_alive_and_small(live: Server) -> None:
-    """Each hostile request of round 3 not sent above, to the live 2-worker server: a 4xx
+def test_every_hostile_request_leaves_the_workers_alive_and_small(live: Server) -> None:
+    """Each hostile request not sent above, to the live 2-worker server: a 4xx
     (never a 5xx or a dropped connection), the same worker PIDs, RSS growth bounded."""
     pids = worker_pids(live)
     rss = {pid: worker_rss_mb(pid) for pid in pids}
     with httpx.Client(base_url=live.url, timeout=120) as http:
-        for name, (method, path, kwargs) in _round3_requests().items():
+        for name, (method, path, kwargs) in _hostile_requests().items():
             for _ in range(2):  # each worker should see one
                 resp = http.request(method, path, **kwargs)
                 assert 400 <= resp.status_code < 500, (name, resp.status_code, resp.text[:300])

@@ -107,7 +107,7 @@ def random_configurations(robot: RobotModel, n: int, seed: int = 0) -> np.ndarra
 
 
 def planar2_elbows(x: float, y: float, l1: float, l2: float) -> list[tuple[float, float]]:
-    """Closed-form planar 2-link IK (DOMAIN.md), both elbows (θ2 > 0 first):
+    """Closed-form planar 2-link IK (the textbook solution), both elbows (θ2 > 0 first):
     θ2 = ±acos c2, θ1 = atan2(y, x) − atan2(l2 s2, l1 + l2 c2)."""
     c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
     out = []

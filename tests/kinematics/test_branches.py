@@ -1,4 +1,4 @@
-"""IK branches, ranking and typed failures (issue 13, items 3 and 5), against references.
+"""IK branches, ranking and typed failures, against references.
 
 Branch flags are checked against definitions computed independently of the code's triple
 products: yourdfpy link frames, finite differences, the textbook joint-space signs (UR:
@@ -177,7 +177,7 @@ def test_stanford_arm_has_no_elbow_flag_and_panda_no_flags(registry) -> None:
 
 
 def test_planar2_elbows_are_labelled_by_the_sign_of_theta2(registry) -> None:
-    """elbow_up ⇔ θ2 ∈ (0, π) (DOMAIN.md's DH arm, l1 = 1, l2 = 0.8)."""
+    """elbow_up ⇔ θ2 ∈ (0, π) (the planar DH arm, l1 = 1, l2 = 0.8)."""
     robot = registry.get("planar2")
     ch = ik_chain(robot, robot.ee_frame)
     t1, t2 = 0.4, 1.1

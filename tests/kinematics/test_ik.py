@@ -1,7 +1,7 @@
 """Inverse kinematics against independent references.
 
 Solutions are checked with yourdfpy's forward kinematics (not Pinocchio's), joint limits
-with the URDF's numbers, and the planar 2-link arm against DOMAIN.md's closed form.
+with the URDF's numbers, and the planar 2-link arm against the textbook closed form.
 Budgets are generous (tests run on loaded machines); speed is measured in bench/.
 """
 
@@ -160,7 +160,7 @@ def test_ur_geometry_is_detected_only_where_it_applies(registry) -> None:
 
 # ------------------------------------------------------------------ planar 2-link closed form
 def _planar_closed_form(l1: float, l2: float, x: float, y: float) -> set[tuple[float, float]]:
-    """DOMAIN.md: c2 = (x² + y² − l1² − l2²)/(2 l1 l2), θ2 = ±acos c2."""
+    """Textbook closed form: c2 = (x² + y² − l1² − l2²)/(2 l1 l2), θ2 = ±acos c2."""
     c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
     out = set()
     for t2 in (math.acos(c2), -math.acos(c2)):

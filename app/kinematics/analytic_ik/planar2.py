@@ -13,7 +13,7 @@ so for a target t in the plane, |t|² = l1² + l2² + 2 l1 l2 cos(s·q2 + β), i
     s·q2 + β = ±acos(c2)                   (the two elbow solutions),
     q1 = atan2(t) − atan2(r1 + Rot(±acos c2 − β) r2).
 
-With the DH table of DOMAIN.md (β = 0, s = 1) this is θ2 = ±acos(c2) and
+With the planar DH table (robots/dh/planar2.yaml: β = 0, s = 1) this is θ2 = ±acos(c2) and
 θ1 = atan2(y, x) − atan2(l2 sin θ2, l1 + l2 cos θ2). Each angle is moved by a multiple of 2π
 into the joint's limits when possible (closest to the seed); continuous joints are wrapped
 to (−π, π].
