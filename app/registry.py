@@ -378,8 +378,9 @@ class Registry:
             description=description,
             package_dirs=[str(erd_share_dir())],
         )
-        dirs = [str(erd_share_dir())]
-        triangles = check_meshes(urdf, meshes, dirs, self.limits.mesh, self.limits.parse, "urdf")
+        limits = self.limits
+        dirs = robot.package_dirs
+        triangles = check_meshes(urdf, meshes, dirs, limits.mesh, limits.parse, "urdf")
         robot.mesh_limits = self.limits.mesh
         meta = {
             "name": robot_id,
@@ -443,8 +444,7 @@ class Registry:
                 package_dirs=[str(staging), str(erd_share_dir())],
                 urdf_field="description",
             )
-            dirs = [str(staging), str(erd_share_dir())]
-            limits = self.limits
+            dirs, limits = robot.package_dirs, self.limits
             triangles = check_meshes(
                 package.urdf, package.meshes, dirs, limits.mesh, limits.parse, "archive"
             )

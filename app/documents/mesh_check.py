@@ -2,17 +2,19 @@
 
 :func:`check_meshes` runs task ``meshes`` (:func:`check_in_child`) of
 :mod:`app.documents.sandbox`. In the child, each mesh file the URDF names (collision and
-visual) has its header checked (:func:`app.kinematics.meshes.check_header`) and is then
-loaded by coal's loader; the robot's collision geometry is then built exactly as a worker
-builds it (:func:`app.kinematics.meshes.collision_geometry`), and its triangles counted
-against ``DENAVIT_MAX_COLLISION_TRIANGLES``. So a 201 means every mesh loads and collisions
-work, and whatever a mesh does to the loader (stall, balloon, crash) happens in the child,
-bounded by ``DENAVIT_PARSE_TIMEOUT_S`` and ``DENAVIT_PARSE_MEMORY_BYTES``, never in a
-worker.
+visual) has its header checked (:func:`app.kinematics.meshes.check_header`); the robot's
+collision geometry is then built exactly as a worker builds it
+(:func:`app.kinematics.meshes.collision_geometry`), its triangles counted against
+``DENAVIT_MAX_COLLISION_MESH_TRIANGLES`` and ``DENAVIT_MAX_COLLISION_TRIANGLES``, and the
+meshes it did not read (visual ones) are loaded by coal's loader. So a 201 means every
+mesh loads and collisions work, and whatever a mesh does to the loader (stall, balloon,
+crash) happens in the child, bounded by ``DENAVIT_PARSE_TIMEOUT_S`` and
+``DENAVIT_PARSE_MEMORY_BYTES``, never in a worker.
 """
 
 from __future__ import annotations
 
+import os
 from collections.abc import Mapping, Sequence
 from dataclasses import asdict
 from pathlib import Path
@@ -111,16 +113,18 @@ def check_in_child(args: dict[str, Any]) -> dict[str, int]:
 
     limits = MeshLimits(**args["limits"])
     field = args["field"]
-    for uri, path in args["meshes"].items():
-        progress(uri)
+    for uri, path in args["meshes"].items():  # every header first: no loader before
         check_header(Path(path), uri, limits, field, collision=False)
-        load_mesh(Path(path), np.ones(3), uri, field)
-    progress("the collision geometry")
     try:
         model = pin.buildModelFromXML(args["urdf"], mimic=True)
     except (ValueError, RuntimeError) as exc:  # pragma: no cover - checked before
         raise InvalidInputError(f"the URDF cannot be read ({type(exc).__name__})", field) from None
-    gm = collision_geometry(model, args["urdf"], args["package_dirs"], limits, field)
+    gm = collision_geometry(model, args["urdf"], args["package_dirs"], limits, field, progress)
+    read = {os.path.normpath(go.meshPath) for go in gm.geometryObjects if go.meshPath}
+    for uri, path in args["meshes"].items():  # what the collision geometry did not read
+        if os.path.normpath(path) not in read:
+            progress(uri)
+            load_mesh(Path(path), np.ones(3), uri, field)
     triangles = 0
     for go in gm.geometryObjects:
         n = int(getattr(go.geometry, "num_tris", 0))

@@ -249,7 +249,7 @@ def _depth(tree: Element) -> int:
     return deepest
 
 
-def mesh_files(tree: Element) -> list[tuple[str, Path]]:
+def mesh_assets(tree: Element) -> list[tuple[str, Path]]:
     """``(file attribute, real path)`` of every ``<mesh>`` asset of a checked tree (its
     ``meshdir`` made absolute by :func:`check_mjcf_files`)."""
     meshdir = next((c.get("meshdir") for c in tree.iter("compiler") if c.get("meshdir")), "")
@@ -304,7 +304,7 @@ def mjcf_to_urdf(
             FIELD,
         )
     root_pose = root_body_pose(tree)
-    for name, path in mesh_files(tree):
+    for name, path in mesh_assets(tree):
         if check_mesh is not None:
             check_mesh(name, path)
     real_root = os.path.realpath(root)

@@ -198,22 +198,23 @@ class _Resolver:
         if any(ord(c) < 32 for c in name):
             raise self._refuse("mesh", uri, f"{shown}: control characters in it")
         name = name.replace("\\", "/")  # a loader may read a backslash as a separator
-        candidates = [name]
-        if "%" in name:
-            candidates.append(unquote(name))
-        for candidate in candidates:
-            path = candidate
-            if path.lower().startswith("file://"):
-                path = path[len("file://") :]
-            elif _REF_SCHEME.match(path):
-                raise self._refuse("mesh", uri, f"{shown}: no scheme is allowed")
-            if path.startswith("/") or _DRIVE.match(path):
-                raise self._refuse("mesh", uri, f"{shown}: absolute paths leave the package")
-            try:
-                rel = self._confined("mesh", uri, folder, path)
-            except InvalidInputError:
-                raise self._refuse("mesh", uri, f"{shown}: the path leaves the package") from None
-        return rel
+        decoded = unquote(name)  # a loader may percent-decode it (COLLADA's URIs)
+        if decoded != name:
+            self._confine_name(uri, shown, folder, decoded)
+        return self._confine_name(uri, shown, folder, name)
+
+    def _confine_name(self, uri: str, shown: str, folder: str, name: str) -> str:
+        """``name`` relative to ``folder`` and the package (no scheme but ``file://``, not
+        absolute, not leaving it), or refuse with ``shown``."""
+        path = name[len("file://") :] if name.lower().startswith("file://") else name
+        if path == name and _REF_SCHEME.match(path):
+            raise self._refuse("mesh", uri, f"{shown}: no scheme is allowed")
+        if path.startswith("/") or _DRIVE.match(path):
+            raise self._refuse("mesh", uri, f"{shown}: absolute paths leave the package")
+        try:
+            return self._confined("mesh", uri, folder, path)
+        except InvalidInputError:
+            raise self._refuse("mesh", uri, f"{shown}: the path leaves the package") from None
 
 
 def rewrite_references(

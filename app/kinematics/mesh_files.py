@@ -97,7 +97,7 @@ def mesh_counts(path: Path, max_vertices: int) -> MeshCounts:
     elif suffix == ".ply":
         counts = _ply_counts(path, max_vertices)
     elif suffix == ".obj":
-        counts = _obj_counts(path, max_vertices)
+        counts = _obj_counts(path)
     elif suffix == ".dae":
         counts = _dae_counts(path)
     else:
@@ -233,7 +233,7 @@ def statements(path: Path) -> Iterator[list[bytes]]:
         yield joined.split()
 
 
-def _obj_counts(path: Path, max_vertices: int) -> MeshCounts:
+def _obj_counts(path: Path) -> MeshCounts:
     counts = {b"v": 0, b"vn": 0, b"vt": 0}
     faces = 0
     for line in text_lines(path):

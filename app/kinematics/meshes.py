@@ -19,7 +19,7 @@ worker.
 from __future__ import annotations
 
 import posixpath
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from xml.etree.ElementTree import Element, SubElement, tostring
@@ -49,10 +49,6 @@ class MeshLimits:
     max_vertices: int = 1_000_000
     max_collision_triangles: int = 200_000
     max_collision_mesh_triangles: int = 100_000
-
-
-#: No bounds beyond the loader's own: the catalog's files.
-UNBOUNDED = MeshLimits(10**12, 10**12, 10**12)
 
 
 def check_header(path: Path, uri: str, limits: MeshLimits, field: str, collision: bool) -> None:
@@ -125,6 +121,7 @@ def collision_geometry(
     package_dirs: Sequence[str],
     limits: MeshLimits,
     field: str = "robot_id",
+    on_mesh: Callable[[str], None] | None = None,
 ) -> pin.GeometryModel:
     """The URDF's collision geometry as ``pin.buildGeomFromUrdfString`` builds it, each mesh
     read after its header check and loaded on its own.
@@ -133,6 +130,9 @@ def collision_geometry(
     boxes (same links, origins and names, ``<link>_<i>`` in order); each box of a mesh is
     then replaced by the mesh's BVH (coal's loader, with the ``<mesh scale>``), and its
     ``meshPath`` and ``meshScale`` set as Pinocchio sets them.
+
+    ``on_mesh(uri)`` is called before each mesh file is read (a mesh used twice is read
+    once and shared).
 
     Raises
     ------
@@ -164,6 +164,8 @@ def collision_geometry(
             raise InvalidInputError(f"mesh {uri!r} is missing", field)
         key = (path, tuple(scale))
         if key not in loaded:  # a mesh used twice is loaded once and shared (immutable)
+            if on_mesh is not None:
+                on_mesh(uri)
             check_header(path, uri, limits, field, collision=True)
             loaded[key] = load_mesh(path, scale, uri, field)
         go.geometry = loaded[key]

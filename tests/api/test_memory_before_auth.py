@@ -26,7 +26,7 @@ import orjson
 import pytest
 from websockets.sync.client import connect
 
-from tests.helpers import Server, proc_stat, serve
+from tests.helpers import Server, serve, worker_pids
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="reads worker memory from /proc"
@@ -50,17 +50,6 @@ def _status(pid: int, key: str) -> int:
             if line.startswith(key + ":"):
                 return int(line.split()[1]) * 1024
     raise AssertionError(f"no {key} for {pid}")
-
-
-def _workers(server: Server) -> list[int]:
-    """The uvicorn workers: children of the server process started by ``spawn_main``."""
-    pids = []
-    for name in os.listdir("/proc"):
-        if name.isdigit() and (stat := proc_stat(int(name))) and stat[1] == server.proc.pid:
-            with contextlib.suppress(OSError), open(f"/proc/{name}/cmdline", "rb") as f:
-                if b"spawn_main" in f.read():
-                    pids.append(int(name))
-    return sorted(pids)
 
 
 def _baseline(pids: list[int]) -> dict[int, int]:
@@ -92,7 +81,7 @@ def server(tmp_path_factory) -> Iterator[Server]:
                   for line in server.log_lines()) < 2:  # fmt: skip
             assert time.monotonic() < end, server.log.read_text()[-3000:]
             time.sleep(0.05)
-        assert len(_workers(server)) == 2
+        assert len(worker_pids(server)) == 2
         yield server
 
 
@@ -217,7 +206,7 @@ def test_unauthenticated_sockets_cannot_make_workers_buffer(server: Server) -> N
         warm.send(_frame(TEXT, b'{"token": "wrong"}'))
         assert warm.close_code() == 1008
         warm.close()
-    pids = _workers(server)
+    pids = worker_pids(server)
     rss = _baseline(pids)
 
     sockets = [RawSocket(server.url) for _ in kinds]
@@ -234,7 +223,7 @@ def test_unauthenticated_sockets_cannot_make_workers_buffer(server: Server) -> N
     assert not any("sec-websocket-extensions" in ws.headers for ws in sockets)
     expected = {"compressed": 1002, "fragments": 1009, "header": 1009, "json": 1008}
     assert codes == [expected[kind] for kind in kinds], report
-    assert _workers(server) == pids, report
+    assert worker_pids(server) == pids, report
     with connect(
         server.url.replace("http://", "ws://") + PATH,
         additional_headers={"Authorization": f"Bearer {TOKEN}"},
@@ -321,7 +310,7 @@ def test_endless_request_heads_cannot_make_workers_buffer(server: Server) -> Non
         "one line": (_get("/health")[:-2] + b"X-Big: ", b"a" * (64 << 10)),
     }
     _answer(server.url, _get("/health"))  # first use of the code in a worker
-    pids = _workers(server)
+    pids = worker_pids(server)
     rss = _baseline(pids)
     sent = {}
     for kind, (start, chunk) in heads.items():
@@ -340,5 +329,5 @@ def test_endless_request_heads_cannot_make_workers_buffer(server: Server) -> Non
     report = f"sent {sent}; RSS +{grown / 2**20:.1f} MiB, peak +{peak / 2**20:.1f} MiB"
     assert peak < BOUND and grown < BOUND, report
     assert all(n < 64 << 20 for n in sent.values()), report
-    assert _workers(server) == pids, report
+    assert worker_pids(server) == pids, report
     assert _answer(server.url, _get("/health")) == (200, {"status": "ok"})
