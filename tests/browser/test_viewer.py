@@ -17,6 +17,7 @@ from tests.browser.tools import (
     BENT,
     Tab,
     api_fk,
+    assert_reaches,
     assert_same_pose,
     open_viewer,
     page_q,
@@ -143,7 +144,7 @@ def test_dragging_the_gizmo_solves_ik_to_the_new_target(
     q = page_q(page)
     assert q == last["answer"]["q"]
     reached = api_fk(page, robot_id, q, tip)  # the API's FK of the page's configuration
-    assert_same_pose(reached, target, tol=1e-6)
+    assert_reaches(last["answer"], reached, target)  # within the default 1e-5 m / 1e-5 rad
     assert_same_pose(rendered_pose(page, tip), reached)
     # Seeded by the current configuration: the arm moved a little, on its branch.
     assert np.max(np.abs(np.subtract(q, q0))) < 0.5
@@ -164,7 +165,7 @@ def test_other_branches_are_listed_and_taken_on_click(page: Tab) -> None:
     wait_idle(page)
     q = page_q(page)
     assert q == answer["solutions"][5]["q"]
-    assert_same_pose(api_fk(page, "ur5", q, "tool0"), tip, tol=1e-6)
+    assert_reaches(answer["solutions"][5], api_fk(page, "ur5", q, "tool0"), tip)
     page.shot("branch")
     assert page.errors() == []
 

@@ -18,6 +18,7 @@ from urllib.parse import urlsplit
 
 import httpx
 import numpy as np
+import pytest
 from PIL import Image, ImageChops, ImageStat
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -151,6 +152,35 @@ def api_fk(tab: Tab, robot_id: str, q: list[float], frame: str) -> dict:
     resp = tab.http.post(f"/robots/{robot_id}/fk", json={"q": q, "frames": [frame]})
     assert resp.status_code == 200, resp.text
     return resp.json()["poses"][frame]
+
+
+def rotation_angle(qa: list[float], qb: list[float]) -> float:
+    """Angle (rad) of the rotation between two unit quaternions [x, y, z, w], well
+    conditioned near zero (atan2 of the relative rotation's vector part and scalar)."""
+    xa, ya, za, wa = qa
+    xb, yb, zb, wb = qb
+    # conj(qa) * qb, Hamilton product
+    w = wa * wb + xa * xb + ya * yb + za * zb
+    v = np.array(
+        [
+            wa * xb - xa * wb - ya * zb + za * yb,
+            wa * yb - ya * wb - za * xb + xa * zb,
+            wa * zb - za * wb - xa * yb + ya * xb,
+        ]
+    )
+    return float(2 * np.arctan2(np.linalg.norm(v), abs(w)))
+
+
+def assert_reaches(answer: dict, reached: dict, target: dict, tol: float = 1e-5) -> None:
+    """An IK success holds its contract: the pose reached (FK of the answer's q, computed
+    independently of the solver) is within the success tolerance of the target, and the
+    errors the answer reports are the true ones."""
+    position_error = float(np.linalg.norm(np.subtract(reached["position"], target["position"])))
+    angle = rotation_angle(reached["orientation"], target["orientation"])
+    assert position_error <= tol, (position_error, answer["position_error"])
+    assert angle <= tol, (angle, answer["orientation_error"])
+    assert answer["position_error"] == pytest.approx(position_error, abs=1e-12)
+    assert answer["orientation_error"] == pytest.approx(angle, abs=1e-9)
 
 
 def assert_same_pose(a: dict, b: dict, tol: float = 1e-9) -> None:
