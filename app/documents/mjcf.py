@@ -1,19 +1,22 @@
-"""Reading a client's MJCF (MuJoCo) arm into URDF text, confined to its package.
+"""Reading a client's MJCF (MuJoCo) model into URDF text, confined to its package.
 
 In the worker, the document and its ``<include>``s are first read with
 :func:`app.kinematics.xmldoc.parse_literal_xml` (the upload's XML limits): every file
-attribute (``file`` of include, mesh, skin, hfield, texture, model; a cube texture's
+attribute (``file`` of include, mesh, skin, hfield, texture; a cube texture's
 ``fileright``, ``fileleft``, ``fileup``, ``filedown``, ``filefront``, ``fileback``) and
 every ``<compiler meshdir/assetdir/texturedir>`` must resolve (symlinks followed) inside the
-package, joints whose type is not ``hinge`` or ``slide`` (``ball``, ``free``,
-``<freejoint>``) are refused naming the joint, the merged model (includes in place) may
-nest no deeper than ``DENAVIT_MAX_XML_DEPTH`` and hold no more bodies than
-``DENAVIT_MAX_URDF_JOINTS``, and each mesh is checked by the caller (its header and the
-files it names) before any loader sees it. Then, in a bounded child process
-(:mod:`app.documents.sandbox`, task ``mjcf``: :func:`convert_in_child`), Pinocchio's MJCF
-parser builds the model (``pin.buildModelFromMJCF``) and its collision and visual geometry
-(``pin.buildGeomFromMJCF``), and the URDF is written from that model
-(:mod:`app.documents.mjcf_urdf`).
+package; ``<replicate>``, ``<attach>`` and ``<model>`` assets (bodies that cannot be counted
+before MuJoCo compiles them, or another model's files) are refused; the merged model
+(includes in place) may nest no deeper than ``DENAVIT_MAX_XML_DEPTH`` and hold no more
+bodies than ``DENAVIT_MAX_URDF_JOINTS``, and each mesh is checked by the caller (its header
+and the files it names) before any loader sees it. Textures (images: the URDF keeps colours
+only) are taken out, every mesh ``file`` is made the checked real path, MuJoCo is told
+to compile in one thread, and, unless the document sets them, ``boundmass="1e-9"`` and
+``boundinertia="1e-12"`` let a kinematic model without masses compile (MuJoCo refuses a
+moving body without mass). Then, in a bounded child process (:mod:`app.documents.sandbox`,
+task ``mjcf``: :func:`app.documents.mjcf_urdf.convert_in_child`), MuJoCo's own compiler
+reads the model and the URDF is written from the compiled model
+(:mod:`app.documents.mjcf_urdf`: what is supported and what is refused).
 """
 
 from __future__ import annotations
@@ -25,9 +28,6 @@ from collections.abc import Callable
 from pathlib import Path
 from xml.etree.ElementTree import Element, tostring
 
-import numpy as np
-import pinocchio as pin
-
 from app.documents.sandbox import PARSE_LIMITS, ChildLimits, run_child
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
@@ -35,7 +35,6 @@ from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 FIELD = "description"
 #: Most files an MJCF document may pull in with ``<include>``.
 MAX_INCLUDES = 64
-_SUPPORTED = {"hinge", "slide"}
 
 
 def _inside(root: Path, path: Path) -> bool:
@@ -103,26 +102,29 @@ def _check_numbers(tree: Element, rel: str) -> None:
                 raise InvalidInputError(f"{shown}: lower bound above the upper one", FIELD)
 
 
-def _check_joint_types(tree: Element, rel: str) -> None:
+#: Elements refused before MuJoCo compiles: what they add cannot be bounded (counted) first.
+_REFUSED = {
+    "replicate": "it repeats bodies that cannot be counted before compiling",
+    "attach": "it attaches another model's bodies",
+    "model": "it reads another model's files",
+}
+
+
+def _check_elements(tree: Element, rel: str) -> None:
     _check_numbers(tree, rel)
     for element in tree.iter():
-        if element.tag in ("frame", "replicate", "attach"):
-            raise InvalidInputError(
-                f"{rel}: <{element.tag}> is not supported (Pinocchio's MJCF parser skips what "
-                "it holds); write its bodies out",
-                FIELD,
-            )
-        if element.tag == "freejoint":
+        if element.tag == "freejoint" or (element.tag == "joint" and element.get("type") == "free"):
             name = element.get("name") or "(unnamed)"
             raise InvalidInputError(
-                f"{rel}: joint {name!r} of type 'free' is not supported (hinge and slide only)",
+                f"{rel}: joint {name!r} of type 'free' is not supported: a free body floats, "
+                "and the service models robots fixed to the world (on the root body, remove "
+                "the free joint to fix the robot at its pose; MuJoCo allows it nowhere else)",
                 FIELD,
             )
-        if element.tag == "joint" and element.get("type", "hinge") not in _SUPPORTED:
-            name = element.get("name") or "(unnamed)"
+        if element.tag in _REFUSED:
             raise InvalidInputError(
-                f"{rel}: joint {name!r} of type {element.get('type')!r} is not supported "
-                "(hinge and slide only)",
+                f"{rel}: <{element.tag}> is not supported ({_REFUSED[element.tag]}); write its "
+                "bodies out",
                 FIELD,
             )
 
@@ -131,7 +133,7 @@ def _expand(root: Path, base: Path, path: Path, limits: XmlLimits, count: list[i
     """The literal tree of ``path`` with every ``<include>`` replaced by the children of the
     included file's root (MuJoCo's rule; Pinocchio's parser does not follow includes)."""
     tree = _read(root, path, limits)
-    _check_joint_types(tree, path.relative_to(root).as_posix())
+    _check_elements(tree, path.relative_to(root).as_posix())
     for parent in list(tree.iter()):
         children = list(parent)
         if not any(child.tag == "include" for child in children):
@@ -186,57 +188,24 @@ def check_mjcf_files(root: Path, description: str, limits: XmlLimits) -> tuple[P
         tree.insert(0, compilers[0])
     for compiler in compilers:
         compiler.attrib.pop("assetdir", None)
-        for key in ("meshdir", "texturedir"):
-            compiler.set(key, str(dirs.get(key, dirs.get("assetdir", base))))
+        compiler.attrib.pop("texturedir", None)
+        compiler.set("meshdir", str(dirs.get("meshdir", dirs.get("assetdir", base))))
+        compiler.set("usethread", "false")  # the child may start no thread
+        # MuJoCo refuses a moving body without mass; a kinematic model may have none
+        for attr, bound in (("boundmass", "1e-9"), ("boundinertia", "1e-12")):
+            compiler.set(attr, compiler.get(attr, bound))
+    _drop_textures(tree)
     return main, tree
 
 
-def _numbers(element: Element, attr: str) -> list[float] | None:
-    """The numbers of ``attr`` (already checked by :func:`_check_numbers`), or ``None``."""
-    raw = element.get(attr)
-    return None if raw is None else [float(v) for v in raw.split()]
-
-
-def _axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
-    return pin.AngleAxis(angle, axis / np.linalg.norm(axis)).matrix()
-
-
-def root_body_pose(tree: Element) -> pin.SE3:
-    """The pose of the one body under ``<worldbody>`` as MuJoCo places it (``pos`` and
-    ``quat``, ``euler`` or ``axisangle``, in the ``<compiler>``'s angle unit and Euler
-    sequence). Pinocchio's MJCF parser reads only the first body under ``<worldbody>`` and,
-    when that body has no joint, drops its pose: the URDF puts it back. More than one
-    top-level body, or ``xyaxes``/``zaxis`` on it, is refused. ``tree`` is one that
-    :func:`check_mjcf_files` gave (its numbers are checked)."""
-    degree, seq = True, "xyz"
-    for compiler in tree.iter("compiler"):
-        degree = compiler.get("angle", "degree" if degree else "radian") == "degree"
-        seq = compiler.get("eulerseq", seq)
-    bodies = [b for w in tree.iter("worldbody") for b in w.findall("body")]
-    if len(bodies) != 1:
-        raise InvalidInputError(
-            f"an arm needs exactly one <body> directly under <worldbody>, found {len(bodies)} "
-            "(Pinocchio's MJCF parser reads only the first)",
-            FIELD,
-        )
-    body = bodies[0]
-    unit = math.pi / 180 if degree else 1.0
-    rotation = np.eye(3)
-    for attr in ("xyaxes", "zaxis"):
-        if body.get(attr) is not None:
-            raise InvalidInputError(f"the root body's {attr!r} is not supported", FIELD)
-    if (quat := _numbers(body, "quat")) is not None:
-        rotation = pin.Quaternion(*quat).normalized().matrix()  # w x y z
-    elif (axisangle := _numbers(body, "axisangle")) is not None:
-        rotation = _axis_rotation(np.array(axisangle[:3]), axisangle[3] * unit)
-    elif (euler := _numbers(body, "euler")) is not None:
-        if len(seq) != 3 or any(c not in "xyzXYZ" for c in seq):
-            raise InvalidInputError(f"<compiler eulerseq={seq[:10]!r}> is not valid", FIELD)
-        for axis_name, angle in zip(seq, euler, strict=True):
-            step = _axis_rotation(np.eye(3)["xyz".index(axis_name.lower())], angle * unit)
-            rotation = rotation @ step if axis_name.islower() else step @ rotation
-    pos = _numbers(body, "pos") or [0.0, 0.0, 0.0]
-    return pin.SE3(rotation, np.array(pos))
+def _drop_textures(tree: Element) -> None:
+    """Take textures out (images the URDF does not use: colours only)."""
+    for parent in list(tree.iter()):
+        for child in list(parent):
+            if child.tag in ("texture", "skin") or (parent.tag, child.tag) == ("material", "layer"):
+                parent.remove(child)
+    for material in tree.iter("material"):
+        material.attrib.pop("texture", None)
 
 
 def _depth(tree: Element) -> int:
@@ -247,17 +216,6 @@ def _depth(tree: Element) -> int:
         deepest = max(deepest, depth)
         todo.extend((child, depth + 1) for child in element)
     return deepest
-
-
-def mesh_assets(tree: Element) -> list[tuple[str, Path]]:
-    """``(file attribute, real path)`` of every ``<mesh>`` asset of a checked tree (its
-    ``meshdir`` made absolute by :func:`check_mjcf_files`)."""
-    meshdir = next((c.get("meshdir") for c in tree.iter("compiler") if c.get("meshdir")), "")
-    return [
-        (m.get("file", ""), Path(os.path.realpath(Path(meshdir) / m.get("file", ""))))
-        for m in tree.iter("mesh")
-        if m.get("file")
-    ]
 
 
 def mjcf_to_urdf(
@@ -279,14 +237,15 @@ def mjcf_to_urdf(
         XML bounds (the merged model's depth included); most bodies
         (``DENAVIT_MAX_URDF_JOINTS``).
     child
-        Bounds on the child process that runs Pinocchio's parser.
+        Bounds on the child process that runs MuJoCo's compiler.
     check_mesh
         Called as ``check_mesh(name, path)`` for every mesh asset before any loader sees
         one (the package's header and reference checks).
 
     Mesh ``filename``s in the result are paths relative to the description's directory.
-    Raises :class:`~app.kinematics.errors.InvalidInputError` (field ``description``; a
-    joint that is not a hinge or slide names the joint and its type).
+    Raises :class:`~app.kinematics.errors.InvalidInputError` (field ``description``; what
+    the service does not support names the element and why, see
+    :mod:`app.documents.mjcf_urdf`).
     """
     main, tree = check_mjcf_files(root, description, limits)
     depth = _depth(tree)
@@ -303,20 +262,18 @@ def mjcf_to_urdf(
             "DENAVIT_MAX_URDF_JOINTS)",
             FIELD,
         )
-    root_pose = root_body_pose(tree)
-    for name, path in mesh_assets(tree):
-        if check_mesh is not None:
-            check_mesh(name, path)
+    meshdir = next((c.get("meshdir") for c in tree.iter("compiler") if c.get("meshdir")), "")
+    for mesh in tree.iter("mesh"):
+        if mesh.get("file"):
+            path = Path(os.path.realpath(Path(meshdir) / mesh.get("file", "")))
+            if check_mesh is not None:
+                check_mesh(mesh.get("file", ""), path)
+            mesh.set("file", str(path))  # what was checked is what MuJoCo reads
     real_root = os.path.realpath(root)
     with tempfile.TemporaryDirectory(prefix="denavit-mjcf-") as tmp:
         merged = Path(tmp) / "model.xml"
         merged.write_bytes(tostring(tree, encoding="utf-8"))
-        args = {
-            "model": str(merged),
-            "base": str(main.parent),
-            "root_pose": root_pose.homogeneous.tolist(),
-            "hide": [real_root, tmp],
-        }
+        args = {"model": str(merged), "base": str(main.parent), "hide": [real_root, tmp]}
         urdf = run_child("mjcf", args, child, field=FIELD, what="reading the MJCF model")
     if not isinstance(urdf, str):  # pragma: no cover - the child answers a document
         raise InvalidInputError("the MJCF model gave no document", FIELD)

@@ -1,26 +1,40 @@
-"""The child side of MJCF conversion: Pinocchio's model of a checked MJCF file, as URDF.
+"""The child side of MJCF conversion: MuJoCo's compiled model of a checked MJCF file, as URDF.
 
 :func:`convert_in_child` runs in the bounded child process of :mod:`app.documents.sandbox`
 (task ``mjcf``, started by :func:`app.documents.mjcf.mjcf_to_urdf` once the document and its
-files are checked). Pinocchio's MJCF parser builds the model (``pin.buildModelFromMJCF``)
-and its collision and visual geometry (``pin.buildGeomFromMJCF``), and the URDF is written
-from that model:
+files are checked). MuJoCo's own compiler (``mujoco.MjModel.from_xml_path``) reads the model,
+so default classes, ``childclass``, the ``<compiler>`` settings (angle, eulerseq, autolimits),
+includes and keyframes mean what they mean to MuJoCo; the URDF is written from the compiled
+model (frames: MuJoCo's, every pose relative to the parent body; lengths in metres, angles
+in radians; a joint's position on the wire is MuJoCo's ``qpos``):
 
-- one link per MJCF body (its name), plus a root link ``world`` (the worldbody) and, for
-  a joint that is not at its body's origin (``<joint pos>``), a link ``<joint>_link`` at
-  the joint frame, fixed to the body's link;
-- hinge → ``revolute`` with ``<limit>`` (its range) or, unlimited, ``continuous``;
-  slide → ``prismatic`` (an unlimited slide is refused: URDF needs its limits);
-  axes as Pinocchio normalised them; origins as ``xyz`` and ``rpy`` of Pinocchio's
-  placements, written with ``repr`` (full precision);
-- each joint's inertia (Pinocchio's: the bodies it moves, fixed ones included) on the
-  joint's link, expressed in its frame;
-- geometry as ``<collision>`` (geoms that collide) and ``<visual>`` (all): box, sphere,
-  cylinder, capsule (as a cylinder and two spheres: urdfdom reads no capsule), and meshes
-  by file name relative to the description's directory with their scale; planes,
-  ellipsoids and height fields are left out;
-- the pose of the root body, which Pinocchio drops when that body has no joint, given by
-  the parent (:func:`app.documents.mjcf.root_body_pose`).
+- a link per body (its name; the world body is the root link ``world``); a body without
+  joints hangs from its parent by a fixed joint at ``body_pos``/``body_quat``;
+- hinge → ``revolute`` (limited) or ``continuous``; slide → ``prismatic`` (an unlimited
+  slide is refused: URDF needs its limits). MuJoCo turns a joint about its anchor
+  ``jnt_pos`` (body frame) by ``qpos - qpos0`` (``ref``): the URDF joint sits at the anchor,
+  turned by ``-ref`` about its axis, and a joint off the body's origin gets a link
+  ``<joint>_link`` at the anchor and a fixed joint from it to the body's link, so that the
+  body's link is where MuJoCo puts the body. Several joints in one body chain that way in
+  MuJoCo's order;
+- a ``<site>`` is a bare link of its name on a fixed joint (a name clash is refused);
+- ``<equality><joint>`` with ``polycoef="c0 c1 0 0 0"`` → ``<mimic>`` of joint1 following
+  joint2 (multiplier ``c1``, offset ``joint1_ref + c0 - c1 * joint2_ref``); ball and free
+  joints, nonlinear polycoefs, tendon, ``connect``, ``weld`` and flex equalities that are
+  active are refused naming the element (the service models kinematic trees of hinges
+  and slides: each would be a different robot); actuators, sensors, contact excludes,
+  tendons no equality uses and keyframes are not kinematics: ignored;
+- geoms of a body (the world body's, such as a scene's floor, are not the robot's and are
+  left out): a ``<collision>`` when the geom collides (``contype`` or ``conaffinity``
+  non-zero), a ``<visual>`` when it is in a group MuJoCo's viewer shows by default
+  (0, 1, 2: Menagerie's visual geoms are group 2 without contacts, its collision geoms group
+  3), coloured as MuJoCo colours it (the geom's ``rgba`` if set, else its material's);
+  box, sphere, cylinder, capsule (a cylinder and two spheres: urdfdom reads no capsule),
+  mesh (its file, relative to the description's directory, with its ``scale``, at the
+  pose of the file's own frame: MuJoCo re-centres a mesh at compile and moves the geom by
+  the mesh's offset ``mesh_pos``/``mesh_quat``, which the origin undoes); planes,
+  ellipsoids, height fields and SDFs are left out;
+- each body's inertia on its link, at its inertial frame.
 """
 
 from __future__ import annotations
@@ -30,39 +44,31 @@ import os
 from pathlib import Path
 from typing import Any
 
+import mujoco
 import numpy as np
-import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.rotations import matrix_to_rpy
 
 FIELD = "description"
-_SHORTNAME_TYPES = {
-    "JointModelFreeFlyer": "free",
-    "JointModelSpherical": "ball",
-    "JointModelSphericalZYX": "ball",
-    "JointModelComposite": "several joints in one body",
-    "JointModelPlanar": "planar",
-}
-_REVOLUTE = {"JointModelRX": (1, 0, 0), "JointModelRY": (0, 1, 0), "JointModelRZ": (0, 0, 1)}
-_PRISMATIC = {"JointModelPX": (1, 0, 0), "JointModelPY": (0, 1, 0), "JointModelPZ": (0, 0, 1)}
+_VISIBLE_GROUPS = (0, 1, 2)
+#: MuJoCo's default geom colour: a geom with another ``rgba`` overrides its material.
+_DEFAULT_RGBA = (0.5, 0.5, 0.5, 1.0)
+_JOINT_TYPES = {0: "free", 1: "ball", 2: "slide", 3: "hinge"}
+_EQUALITY_TYPES = {0: "connect", 1: "weld", 2: "joint", 3: "tendon", 4: "flex"}
 
 
 def convert_in_child(args: dict[str, Any]) -> str:
-    """The sandbox task: Pinocchio reads the merged model ``args["model"]`` and its
-    geometry, and the URDF is written from them (runs in the child only)."""
+    """The sandbox task: MuJoCo compiles the merged model ``args["model"]`` and the URDF is
+    written from it (runs in the child only)."""
     try:
-        model = pin.buildModelFromMJCF(args["model"])
-        geoms = {
-            kind: pin.buildGeomFromMJCF(model, args["model"], kind)
-            for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL)
-        }
-    except Exception as exc:  # noqa: BLE001 - whatever the parser throws: the document
-        message = " ".join(str(exc).split("message:")[-1].split())
+        model = mujoco.MjModel.from_xml_path(args["model"])
+    except Exception as exc:  # noqa: BLE001 - whatever the compiler throws: the document
+        message = " ".join(str(exc).split())
         for hidden in args["hide"]:
             message = message.replace(f"{hidden}/", "").replace(hidden, ".")
         raise InvalidInputError(f"not a valid MJCF model: {message}"[:500], FIELD) from None
-    root_pose = pin.SE3(np.array(args["root_pose"]))
-    return _urdf(model, geoms, Path(args["base"]), root_pose)
+    return _Writer(model, Path(args["base"])).urdf()
 
 
 def _num(x: float) -> str:
@@ -71,188 +77,317 @@ def _num(x: float) -> str:
     return repr(float(x)) if x != 0 else "0.0"
 
 
-def _origin(m: pin.SE3) -> str:
-    xyz = " ".join(_num(v) for v in m.translation)
-    rpy = " ".join(_num(v) for v in pin.rpy.matrixToRpy(m.rotation))
-    return f'<origin xyz="{xyz}" rpy="{rpy}"/>'
-
-
-def _unique(name: str, taken: set[str]) -> str:
-    while name in taken:
-        name += "_"
-    taken.add(name)
-    return name
-
-
-def _geometry(obj: pin.GeometryObject, base: Path) -> str | None:
-    """URDF ``<geometry>`` of a Pinocchio geometry object, or ``None`` if URDF has none."""
-    g = obj.geometry
-    kind = type(g).__name__
-    if kind == "Box":
-        return f'<box size="{" ".join(_num(2 * v) for v in g.halfSide)}"/>'
-    if kind == "Sphere":
-        return f'<sphere radius="{_num(g.radius)}"/>'
-    if kind == "Cylinder":
-        return f'<cylinder radius="{_num(g.radius)}" length="{_num(2 * g.halfLength)}"/>'
-    if obj.meshPath and kind.startswith(("BVHModel", "Convex")):
-        name = Path(os.path.relpath(os.path.realpath(obj.meshPath), base)).as_posix()
-        scale = " ".join(_num(v) for v in obj.meshScale)
-        return f'<mesh filename="{_xml(name)}" scale="{scale}"/>'
-    return None
-
-
-def _shapes(obj: pin.GeometryObject, placement: pin.SE3, base: Path) -> list[tuple[str, pin.SE3]]:
-    """URDF geometries (with their origins in the link) of one geometry object: a capsule
-    (which urdfdom does not read) is a cylinder and two spheres, exactly its volume."""
-    g = obj.geometry
-    if type(g).__name__ == "Capsule":
-        r, h = _num(g.radius), g.halfLength
-        ends = [placement * pin.SE3(np.eye(3), np.array([0.0, 0.0, z])) for z in (h, -h)]
-        return [(f'<cylinder radius="{r}" length="{_num(2 * h)}"/>', placement)] + [
-            (f'<sphere radius="{r}"/>', end) for end in ends
-        ]
-    geometry = _geometry(obj, base)
-    return [] if geometry is None else [(geometry, placement)]
-
-
 def _xml(text: str) -> str:
     return (
         text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
     )
 
 
-def _joint_xml(model: pin.Model, j: int, parent: str, child: str, origin: pin.SE3) -> str:
-    joint = model.joints[j]
-    short = joint.shortname()
-    name = model.names[j]
-    if short in _REVOLUTE or short == "JointModelRevoluteUnaligned":
-        axis = _REVOLUTE.get(short) or tuple(joint.extract().axis)
-        revolute = True
-    elif short in _PRISMATIC or short == "JointModelPrismaticUnaligned":
-        axis = _PRISMATIC.get(short) or tuple(joint.extract().axis)
-        revolute = False
-    else:
-        mjcf_type = _SHORTNAME_TYPES.get(short, short)
-        raise InvalidInputError(
-            f"joint {name!r} of type {mjcf_type!r} is not supported (hinge and slide only)", FIELD
+def _pose(pos: Any, quat: Any) -> np.ndarray:
+    """A 4×4 transform from a position and a MuJoCo quaternion [w, x, y, z]."""
+    mat = np.zeros(9)
+    mujoco.mju_quat2Mat(mat, np.asarray(quat, dtype=float))
+    T = np.eye(4)
+    T[:3, :3] = mat.reshape(3, 3)
+    T[:3, 3] = pos
+    return T
+
+
+def _translation(v: Any) -> np.ndarray:
+    T = np.eye(4)
+    T[:3, 3] = v
+    return T
+
+
+def _rotation(axis: np.ndarray, angle: float) -> np.ndarray:
+    quat = np.zeros(4)
+    mujoco.mju_axisAngle2Quat(quat, np.asarray(axis, dtype=float), float(angle))
+    return _pose(np.zeros(3), quat)
+
+
+def _origin(T: np.ndarray) -> str:
+    xyz = " ".join(_num(v) for v in T[:3, 3])
+    rpy = " ".join(_num(v) for v in matrix_to_rpy(T[:3, :3]))
+    return f'<origin xyz="{xyz}" rpy="{rpy}"/>'
+
+
+class _Writer:
+    """The URDF of one compiled MjModel (see the module's docstring)."""
+
+    def __init__(self, model: mujoco.MjModel, base: Path) -> None:
+        self.m = model
+        self.base = base
+        self.links: list[str] = []
+        self.body: dict[str, list[str]] = {}
+        self.joints: list[str] = []
+        self.joint_names = {
+            self.name(mujoco.mjtObj.mjOBJ_JOINT, j) or f"joint{j}" for j in range(model.njnt)
+        }
+        self.mimic = self._mimics()
+
+    def fixed(self, name: str, parent: str, child: str, origin: np.ndarray) -> None:
+        """A fixed joint named ``name`` (``_`` appended while a joint has that name)."""
+        while name in self.joint_names:
+            name += "_"
+        self.joint_names.add(name)
+        self.joints.append(_fixed(name, parent, child, origin))
+
+    def name(self, kind: mujoco.mjtObj, i: int) -> str:
+        return mujoco.mj_id2name(self.m, kind, i) or ""
+
+    def _mimics(self) -> dict[int, tuple[int, float, float]]:
+        """Follower joint id → (leader joint id, multiplier, offset), from active joint
+        equalities; every other active equality refused (module doc)."""
+        m, out = self.m, {}
+        for e in range(m.neq):
+            if not m.eq_active0[e]:
+                continue
+            kind = _EQUALITY_TYPES.get(int(m.eq_type[e]), str(m.eq_type[e]))
+            label = self.name(mujoco.mjtObj.mjOBJ_EQUALITY, e)
+            shown = f"<equality><{kind}{f' name={label!r}' if label else ''}>"
+            if kind != "joint":
+                why = {
+                    "connect": "it closes a kinematic loop",
+                    "weld": "it welds two bodies (a kinematic loop)",
+                    "tendon": "a tendon coupling joints is not a mimic joint",
+                }.get(kind, "it is not a joint coupling")
+                raise InvalidInputError(
+                    f"{shown} is not supported: {why}; the service models kinematic trees "
+                    "of hinge and slide joints (mimic joints from <equality><joint>)",
+                    FIELD,
+                )
+            j1, j2 = int(m.eq_obj1id[e]), int(m.eq_obj2id[e])
+            name1 = self.name(mujoco.mjtObj.mjOBJ_JOINT, j1)
+            coef = [float(c) for c in m.eq_data[e][:5]]
+            if j2 < 0:
+                raise InvalidInputError(
+                    f"{shown} on joint {name1!r} alone (it locks the joint) is not supported",
+                    FIELD,
+                )
+            name2 = self.name(mujoco.mjtObj.mjOBJ_JOINT, j2)
+            if any(coef[2:]) or coef[1] == 0.0:
+                raise InvalidInputError(
+                    f"{shown} coupling {name1!r} to {name2!r} with polycoef "
+                    f"{' '.join(f'{c:g}' for c in coef)} is not supported: only a linear "
+                    "coupling 'c0 c1 0 0 0' with c1 != 0 is a mimic joint",
+                    FIELD,
+                )
+            if j1 in out:
+                raise InvalidInputError(f"joint {name1!r} is coupled by two equalities", FIELD)
+            ref1, ref2 = m.qpos0[m.jnt_qposadr[j1]], m.qpos0[m.jnt_qposadr[j2]]
+            out[j1] = (j2, coef[1], ref1 + coef[0] - coef[1] * ref2)
+        return out
+
+    def urdf(self) -> str:
+        m = self.m
+        taken: set[str] = set()
+        names: list[str] = []
+        for b in range(m.nbody):
+            name = "world" if b == 0 else self.name(mujoco.mjtObj.mjOBJ_BODY, b)
+            if not name:
+                name = f"body{b}"
+            if name in taken:
+                raise InvalidInputError(f"two bodies are named {name!r}", FIELD)
+            taken.add(name)
+            names.append(name)
+            self._link(name)
+        for b in range(1, m.nbody):
+            self._body(b, names[int(m.body_parentid[b])], names[b], taken)
+        for s in range(m.nsite):
+            name = self.name(mujoco.mjtObj.mjOBJ_SITE, s)
+            if not name:
+                continue
+            if name in taken:
+                raise InvalidInputError(
+                    f"<site name={name!r}>: its name is already a body's or a joint's link "
+                    "(each site becomes a link of its name)",
+                    FIELD,
+                )
+            taken.add(name)
+            self._link(name)
+            origin = _pose(m.site_pos[s], m.site_quat[s])
+            self.fixed(f"{name}_site", names[int(m.site_bodyid[s])], name, origin)
+        for b in range(1, m.nbody):
+            self._inertial(b, names[b])
+        for g in range(m.ngeom):
+            if m.geom_bodyid[g] != 0:
+                self._geom(g, names[int(m.geom_bodyid[g])])
+        model_name = self.name(mujoco.mjtObj.mjOBJ_MODEL, 0) or "mjcf"
+        out = [f'<?xml version="1.0"?>\n<robot name="{_xml(model_name)}">\n']
+        for name in self.links:
+            out.append(f'  <link name="{_xml(name)}">\n{"".join(self.body[name])}  </link>\n')
+        out.extend(self.joints)
+        out.append("</robot>\n")
+        return "".join(out)
+
+    def _link(self, name: str) -> None:
+        self.links.append(name)
+        self.body[name] = []
+
+    def _body(self, b: int, parent: str, name: str, taken: set[str]) -> None:
+        """The joints from ``parent``'s link to body ``b``'s link ``name`` (module doc)."""
+        m = self.m
+        pending = _pose(m.body_pos[b], m.body_quat[b])  # where we are, in ``parent``'s link
+        first, count = int(m.body_jntadr[b]), int(m.body_jntnum[b])
+        for j in range(first, first + count):
+            jname = self.name(mujoco.mjtObj.mjOBJ_JOINT, j) or f"joint{j}"
+            kind = _JOINT_TYPES.get(int(m.jnt_type[j]), str(m.jnt_type[j]))
+            if kind not in ("hinge", "slide"):
+                where = "the root body" if m.body_parentid[b] == 0 else f"body {name!r}"
+                why = (
+                    "it makes the robot float (remove it to fix the robot at its pose)"
+                    if kind == "free" and m.body_parentid[b] == 0
+                    else "hinge and slide only"
+                )
+                raise InvalidInputError(
+                    f"joint {jname!r} of type {kind!r} on {where} is not supported ({why})",
+                    FIELD,
+                )
+            axis = np.asarray(m.jnt_axis[j], dtype=float)
+            ref = float(m.qpos0[m.jnt_qposadr[j]])
+            if kind == "hinge":
+                origin = pending @ _translation(m.jnt_pos[j]) @ _rotation(axis, -ref)
+                after = _translation(-np.asarray(m.jnt_pos[j], dtype=float))
+            else:
+                origin = pending @ _translation(-ref * axis)
+                after = np.eye(4)
+            last = j == first + count - 1
+            if last and np.array_equal(after, np.eye(4)):
+                child = name
+            else:
+                child = f"{jname}_link"
+                if child in taken:
+                    raise InvalidInputError(
+                        f"joint {jname!r} needs a link {child!r} at its anchor, a name taken",
+                        FIELD,
+                    )
+                taken.add(child)
+                self._link(child)
+            self.joints.append(self._joint(j, jname, kind, parent, child, origin, axis))
+            parent, pending = child, after
+        if parent != name:
+            self.fixed(f"{name}_fixed", parent, name, pending)
+
+    def _joint(
+        self,
+        j: int,
+        name: str,
+        kind: str,
+        parent: str,
+        child: str,
+        origin: np.ndarray,
+        axis: np.ndarray,
+    ) -> str:
+        m = self.m
+        limited = bool(m.jnt_limited[j])
+        lower, upper = (float(v) for v in m.jnt_range[j])
+        if kind == "slide" and not limited:
+            raise InvalidInputError(
+                f"slide joint {name!r} needs a range (URDF needs a prismatic joint's limits)",
+                FIELD,
+            )
+        jtype = ("revolute" if limited else "continuous") if kind == "hinge" else "prismatic"
+        limit = '<limit effort="1000000.0" velocity="1000000.0"'
+        limit += f' lower="{_num(lower)}" upper="{_num(upper)}"/>' if limited else "/>"
+        mimic = ""
+        if j in self.mimic:
+            leader, multiplier, offset = self.mimic[j]
+            lname = self.name(mujoco.mjtObj.mjOBJ_JOINT, leader) or f"joint{leader}"
+            mimic = (
+                f'    <mimic joint="{_xml(lname)}" multiplier="{_num(multiplier)}" '
+                f'offset="{_num(offset)}"/>\n'
+            )
+        unit = axis / np.linalg.norm(axis)
+        return (
+            f'  <joint name="{_xml(name)}" type="{jtype}">\n'
+            f'    <parent link="{_xml(parent)}"/>\n    <child link="{_xml(child)}"/>\n'
+            f"    {_origin(origin)}\n"
+            f'    <axis xyz="{" ".join(_num(v) for v in unit)}"/>\n    {limit}\n{mimic}'
+            "  </joint>\n"
         )
-    i = joint.idx_q
-    lower, upper = model.lowerPositionLimit[i], model.upperPositionLimit[i]
-    limited = math.isfinite(lower) and math.isfinite(upper)
-    if not limited and not revolute:
-        raise InvalidInputError(f"slide joint {name!r} needs a range (URDF needs limits)", FIELD)
-    jtype = ("revolute" if limited else "continuous") if revolute else "prismatic"
-    effort = model.effortLimit[joint.idx_v]
-    velocity = model.velocityLimit[joint.idx_v]
-    effort = effort if math.isfinite(effort) else 1e6
-    velocity = velocity if math.isfinite(velocity) else 1e6
-    limit = f'<limit effort="{_num(effort)}" velocity="{_num(velocity)}"'
-    limit += f' lower="{_num(lower)}" upper="{_num(upper)}"/>' if limited else "/>"
-    return (
-        f'  <joint name="{_xml(name)}" type="{jtype}">\n'
-        f'    <parent link="{_xml(parent)}"/>\n    <child link="{_xml(child)}"/>\n'
-        f"    {_origin(origin)}\n"
-        f'    <axis xyz="{" ".join(_num(v) for v in axis)}"/>\n    {limit}\n  </joint>\n'
-    )
+
+    def _inertial(self, b: int, link: str) -> None:
+        m = self.m
+        mass = float(m.body_mass[b])
+        if mass <= 0.0:
+            return
+        T = _pose(m.body_ipos[b], m.body_iquat[b])
+        d = m.body_inertia[b]
+        self.body[link].append(
+            f'    <inertial>\n      {_origin(T)}\n      <mass value="{_num(mass)}"/>\n'
+            f'      <inertia ixx="{_num(d[0])}" ixy="0.0" ixz="0.0" iyy="{_num(d[1])}" '
+            f'iyz="0.0" izz="{_num(d[2])}"/>\n    </inertial>\n'
+        )
+
+    def _rgba(self, g: int) -> tuple[str, tuple[float, ...]]:
+        """The material name and colour MuJoCo draws geom ``g`` with."""
+        m = self.m
+        rgba = tuple(float(v) for v in m.geom_rgba[g])
+        mat = int(m.geom_matid[g])
+        if mat >= 0 and np.allclose(rgba, _DEFAULT_RGBA, rtol=0, atol=1e-7):
+            name = self.name(mujoco.mjtObj.mjOBJ_MATERIAL, mat)
+            if name:
+                return name, tuple(float(v) for v in m.mat_rgba[mat])
+            rgba = tuple(float(v) for v in m.mat_rgba[mat])
+        return "rgba_" + "_".join(f"{v:.6g}" for v in rgba), rgba
+
+    def _geom(self, g: int, link: str) -> None:
+        m = self.m
+        placement = _pose(m.geom_pos[g], m.geom_quat[g])
+        kind = int(m.geom_type[g])
+        size = [float(v) for v in m.geom_size[g]]
+        shapes: list[tuple[str, np.ndarray]] = []
+        if kind == mujoco.mjtGeom.mjGEOM_BOX:
+            shapes = [(f'<box size="{" ".join(_num(2 * v) for v in size)}"/>', placement)]
+        elif kind == mujoco.mjtGeom.mjGEOM_SPHERE:
+            shapes = [(f'<sphere radius="{_num(size[0])}"/>', placement)]
+        elif kind == mujoco.mjtGeom.mjGEOM_CYLINDER:
+            cyl = f'<cylinder radius="{_num(size[0])}" length="{_num(2 * size[1])}"/>'
+            shapes = [(cyl, placement)]
+        elif kind == mujoco.mjtGeom.mjGEOM_CAPSULE:
+            r, h = _num(size[0]), size[1]
+            shapes = [(f'<cylinder radius="{r}" length="{_num(2 * h)}"/>', placement)]
+            shapes += [
+                (f'<sphere radius="{r}"/>', placement @ _translation([0.0, 0.0, z]))
+                for z in (h, -h)
+            ]
+        elif kind == mujoco.mjtGeom.mjGEOM_MESH:
+            mesh = int(m.geom_dataid[g])
+            adr = int(m.mesh_pathadr[mesh])
+            if adr >= 0:
+                path = m.paths[adr:].split(b"\0", 1)[0].decode("utf-8", "surrogateescape")
+                rel = Path(os.path.relpath(os.path.realpath(path), self.base)).as_posix()
+                scale = " ".join(_num(v) for v in m.mesh_scale[mesh])
+                offset = _pose(m.mesh_pos[mesh], m.mesh_quat[mesh])
+                shapes = [
+                    (
+                        f'<mesh filename="{_xml(rel)}" scale="{scale}"/>',
+                        placement @ np.linalg.inv(offset),
+                    )
+                ]
+        gname = self.name(mujoco.mjtObj.mjOBJ_GEOM, g) or f"geom{g}"
+        collides = bool(m.geom_contype[g] or m.geom_conaffinity[g])
+        visible = int(m.geom_group[g]) in _VISIBLE_GROUPS
+        for geometry, origin in shapes:
+            if visible:
+                mname, rgba = self._rgba(g)
+                colour = " ".join(_num(v) for v in rgba)
+                self.body[link].append(
+                    f'    <visual name="{_xml(gname)}">\n      {_origin(origin)}\n'
+                    f"      <geometry>{geometry}</geometry>\n"
+                    f'      <material name="{_xml(mname)}"><color rgba="{colour}"/></material>\n'
+                    "    </visual>\n"
+                )
+            if collides:
+                self.body[link].append(
+                    f'    <collision name="{_xml(gname)}">\n      {_origin(origin)}\n'
+                    f"      <geometry>{geometry}</geometry>\n    </collision>\n"
+                )
 
 
-def _fixed_xml(name: str, parent: str, child: str, origin: pin.SE3) -> str:
+def _fixed(name: str, parent: str, child: str, origin: np.ndarray) -> str:
     return (
         f'  <joint name="{_xml(name)}" type="fixed">\n'
         f'    <parent link="{_xml(parent)}"/>\n    <child link="{_xml(child)}"/>\n'
         f"    {_origin(origin)}\n  </joint>\n"
     )
-
-
-def _inertial_xml(inertia: pin.Inertia) -> str:
-    if inertia.mass == 0.0 and not np.any(inertia.inertia):
-        return ""
-    i = inertia.inertia
-    values = " ".join(
-        f'{k}="{_num(v)}"'
-        for k, v in (
-            ("ixx", i[0, 0]),
-            ("ixy", i[0, 1]),
-            ("ixz", i[0, 2]),
-            ("iyy", i[1, 1]),
-            ("iyz", i[1, 2]),
-            ("izz", i[2, 2]),
-        )
-    )
-    lever = " ".join(_num(v) for v in inertia.lever)
-    return (
-        f'    <inertial>\n      <origin xyz="{lever}" rpy="0.0 0.0 0.0"/>\n'
-        f'      <mass value="{_num(inertia.mass)}"/>\n      <inertia {values}/>\n    </inertial>\n'
-    )
-
-
-def _urdf(
-    model: pin.Model, geoms: dict[object, pin.GeometryModel], base: Path, root_pose: pin.SE3
-) -> str:
-    """The URDF text of a Pinocchio model built from MJCF (see the module's docstring)."""
-    frames = list(model.frames)
-    taken = {f.name for f in frames if f.type == pin.FrameType.BODY}
-    link_of: dict[int, str] = {0: _unique("world", taken)}  # frame index -> URDF link
-    joint_link: dict[int, str] = {}  # joint index -> the link at the joint's frame
-    # placement of each link's frame in its parent joint's frame
-    link_in_joint: dict[str, pin.SE3] = {link_of[0]: pin.SE3.Identity()}
-    links: list[str] = [link_of[0]]
-    joints: list[str] = []
-    for index, frame in enumerate(frames):
-        if frame.type != pin.FrameType.BODY:
-            continue
-        parent = frames[frame.parentFrame]
-        if parent.type == pin.FrameType.JOINT:
-            j = frame.parentJoint
-            parent_link = link_of[_body_of(frames, parent.parentFrame)]
-            origin = link_in_joint[parent_link].inverse() * model.jointPlacements[j]
-            if frame.placement.isIdentity():
-                child = frame.name
-            else:
-                child = _unique(f"{model.names[j]}_link", taken)
-                links.append(child)
-            joints.append(_joint_xml(model, j, parent_link, child, origin))
-            joint_link[j] = child
-            link_in_joint[child] = pin.SE3.Identity()
-            if child != frame.name:
-                joints.append(_fixed_xml(f"{frame.name}_fixed", child, frame.name, frame.placement))
-        else:
-            parent_link = link_of[_body_of(frames, frame.parentFrame)]
-            origin = link_in_joint[parent_link].inverse() * frame.placement
-            name = parent.name if parent.type == pin.FrameType.FIXED_JOINT else ""
-            if not name or name == "universe":
-                name = f"{frame.name}_fixed"
-            if frame.parentFrame == 0:
-                origin = root_pose * origin  # Pinocchio dropped the root body's pose
-            joints.append(_fixed_xml(name, parent_link, frame.name, origin))
-        link_of[index] = frame.name
-        link_in_joint[frame.name] = frame.placement
-        links.append(frame.name)
-    body: dict[str, list[str]] = {name: [] for name in links}
-    for j, link in joint_link.items():
-        body[link].append(_inertial_xml(model.inertias[j]))
-    for kind, tag in (
-        (pin.GeometryType.VISUAL, "visual"),
-        (pin.GeometryType.COLLISION, "collision"),
-    ):
-        for obj in geoms[kind].geometryObjects:
-            link = link_of[_body_of(frames, obj.parentFrame)]
-            placement = link_in_joint[link].inverse() * obj.placement
-            for geometry, origin in _shapes(obj, placement, base):
-                body[link].append(
-                    f'    <{tag} name="{_xml(obj.name)}">\n      {_origin(origin)}\n'
-                    f"      <geometry>{geometry}</geometry>\n    </{tag}>\n"
-                )
-    out = [f'<?xml version="1.0"?>\n<robot name="{_xml(model.name or "mjcf")}">\n']
-    for name in links:
-        out.append(f'  <link name="{_xml(name)}">\n{"".join(body[name])}  </link>\n')
-    out.extend(joints)
-    out.append("</robot>\n")
-    return "".join(out)
-
-
-def _body_of(frames: list[pin.Frame], index: int) -> int:
-    """The BODY frame (or the universe, 0) a frame hangs from, walking up parents."""
-    while index != 0 and frames[index].type != pin.FrameType.BODY:
-        index = frames[index].parentFrame
-    return index

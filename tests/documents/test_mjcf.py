@@ -3,8 +3,8 @@
 The arm below is also written by hand as URDF (its "twin", from MuJoCo's rules: body pose
 = pos then rotation; ``euler`` intrinsic x-y-z in degrees, as a chain of fixed joints; a
 joint's ``pos`` as a joint frame offset inside its body). FK of the generated URDF through
-Pinocchio must equal yourdfpy's FK of the twin and Pinocchio's FK of the MJCF itself
-(Pinocchio drops the pose of a root body without a joint: that pose is applied by hand).
+Pinocchio must equal yourdfpy's FK of the twin and MuJoCo's own kinematics of the MJCF
+(``mj_kinematics``: ``xpos``/``xmat``).
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ import io
 import math
 from pathlib import Path
 
+import mujoco
 import numpy as np
 import pinocchio as pin
 import pytest
@@ -131,16 +132,34 @@ def _poses(model: pin.Model, q: dict[str, float]) -> dict[str, np.ndarray]:
     return {b: data.oMf[model.getFrameId(b, pin.FrameType.BODY)].homogeneous for b in BODIES}
 
 
-def test_arm_matches_its_hand_written_twin_and_pinocchios_mjcf_model(tmp_path: Path) -> None:
+def mujoco_poses(model: mujoco.MjModel, q: dict[str, float]) -> dict[str, np.ndarray]:
+    """MuJoCo's own kinematics (the reference): every named body's and site's pose in the
+    world at the joint positions ``q`` (by joint name; the others at ``qpos0``)."""
+    data = mujoco.MjData(model)
+    data.qpos[:] = model.qpos0
+    for name, value in q.items():
+        data.qpos[model.jnt_qposadr[model.joint(name).id]] = value
+    mujoco.mj_kinematics(model, data)
+    poses = {}
+    for kind, count, pos, mat in (
+        (mujoco.mjtObj.mjOBJ_BODY, model.nbody, data.xpos, data.xmat),
+        (mujoco.mjtObj.mjOBJ_SITE, model.nsite, data.site_xpos, data.site_xmat),
+    ):
+        for i in range(count):
+            T = np.eye(4)
+            T[:3, :3] = mat[i].reshape(3, 3)
+            T[:3, 3] = pos[i]
+            poses[mujoco.mj_id2name(model, kind, i)] = T
+    return poses
+
+
+def test_arm_matches_its_hand_written_twin_and_mujoco(tmp_path: Path) -> None:
     description = _write(tmp_path, ARM)
     urdf = mjcf_to_urdf(tmp_path, description, XmlLimits())
     check_urdf_document(parse_literal_xml(urdf, "urdf"))
     generated = pin.buildModelFromXML(urdf)
-    mjcf = pin.buildModelFromMJCF(str(tmp_path / description))
+    mjcf = mujoco.MjModel.from_xml_path(str(tmp_path / description))
     twin = yourdfpy.URDF.load(io.BytesIO(TWIN.encode()), load_meshes=False)
-    base_pose = np.eye(4)  # Pinocchio leaves out the root body's pose
-    base_pose[:3, :3] = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
-    base_pose[:3, 3] = (0.1, 0.2, 0.3)
     rng = np.random.default_rng(16)
     for _ in range(50):
         q = {}
@@ -150,27 +169,37 @@ def test_arm_matches_its_hand_written_twin_and_pinocchios_mjcf_model(tmp_path: P
             q[name] = rng.uniform(lo, hi)
         twin.update_cfg(q)
         ours = _poses(generated, q)
-        theirs = _poses(mjcf, q)
+        theirs = mujoco_poses(mjcf, q)
         for body in BODIES:
             expected = twin.get_transform(body, "world")
             assert np.abs(ours[body] - expected).max() < 1e-12, body
-            assert np.abs(base_pose @ theirs[body] - expected).max() < 1e-12, body
+            assert np.abs(theirs[body] - expected).max() < 1e-12, body
 
 
 def test_joint_kinds_limits_and_inertias(tmp_path: Path) -> None:
     urdf = mjcf_to_urdf(tmp_path, _write(tmp_path, ARM), XmlLimits())
     generated = pin.buildModelFromXML(urdf)
-    mjcf = pin.buildModelFromMJCF(str(tmp_path / "robot/arm.xml"))
+    mjcf = mujoco.MjModel.from_xml_path(str(tmp_path / "robot/arm.xml"))
     kinds = {generated.names[j]: generated.joints[j].shortname() for j in range(1, 6)}
     assert kinds["j3"] == "JointModelRUBX"  # unlimited hinge: continuous
     assert kinds["s1"] == "JointModelPZ"
     j1 = generated.joints[generated.getJointId("j1")].idx_q
     assert generated.lowerPositionLimit[j1] == pytest.approx(math.radians(-170), abs=1e-15)
-    for name in JOINTS:
-        a = generated.inertias[generated.getJointId(name)]
-        b = mjcf.inertias[mjcf.getJointId(name)]
-        assert a.mass == pytest.approx(b.mass, abs=1e-12)
-        assert np.abs(a.matrix() - b.matrix()).max() < 1e-12, name
+    # each body's inertia (MuJoCo's: mass, centre, principal axes) on its link, in its frame
+    links = yourdfpy.URDF.load(io.BytesIO(urdf.encode()), load_meshes=False).link_map
+    for body in BODIES:
+        b = mjcf.body(body).id
+        inertial = links[body].inertial
+        if mjcf.body_mass[b] > 1e-6:
+            assert inertial.mass == pytest.approx(mjcf.body_mass[b], abs=1e-12), body
+            rot = np.zeros(9)
+            mujoco.mju_quat2Mat(rot, mjcf.body_iquat[b])
+            rot = rot.reshape(3, 3)
+            assert np.abs(inertial.origin[:3, 3] - mjcf.body_ipos[b]).max() < 1e-12, body
+            expected = rot @ np.diag(mjcf.body_inertia[b]) @ rot.T
+            origin = inertial.origin[:3, :3]
+            inertia = origin @ inertial.inertia @ origin.T
+            assert np.abs(inertia - expected).max() < 1e-12, body
 
 
 def test_geometry_is_where_pinocchio_puts_it(tmp_path: Path) -> None:
@@ -276,13 +305,19 @@ def test_meshes_keep_paths_relative_to_the_description(tmp_path: Path) -> None:
     assert '<mesh filename="assets/tri.obj" scale="1.0 2.0 3.0"/>' in urdf
 
 
-def test_an_unlimited_slide_and_two_root_bodies_are_refused(tmp_path: Path) -> None:
+def test_an_unlimited_slide_is_refused_and_two_root_bodies_load(tmp_path: Path) -> None:
     text = ARM.replace('type="slide" axis="0 0 1" range="-0.05 0.1"', 'type="slide"')
     with pytest.raises(InvalidInputError, match="s1"):
         mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits())
-    text = ARM.replace("</worldbody>", '<body name="other"><geom size="0.1"/></body></worldbody>')
-    with pytest.raises(InvalidInputError, match="one <body>"):
-        mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits())
+    text = ARM.replace(
+        "</worldbody>", '<body name="other" pos="1 2 3"><geom size="0.1"/></body></worldbody>'
+    )
+    model = pin.buildModelFromXML(mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits()))
+    data = model.createData()
+    pin.framesForwardKinematics(model, data, pin.neutral(model))
+    other = data.oMf[model.getFrameId("other", pin.FrameType.BODY)].homogeneous
+    expected = mujoco_poses(mujoco.MjModel.from_xml_string(text), {})["other"]
+    assert np.abs(other - expected).max() < 1e-12
 
 
 def test_xml_limits_apply_to_the_document(tmp_path: Path) -> None:
@@ -318,14 +353,21 @@ def test_parser_errors_do_not_show_server_paths(tmp_path: Path) -> None:
     assert "missing.stl" in info.value.message and str(tmp_path) not in info.value.message
 
 
-def test_frame_elements_are_refused(tmp_path: Path) -> None:
-    # Pinocchio's parser silently skips the bodies inside a <frame>
-    text = ARM.replace('<body name="link4"', '<frame pos="0 0 0"><body name="link4"').replace(
+def test_frame_elements_are_read_as_mujoco_reads_them(tmp_path: Path) -> None:
+    text = ARM.replace(
+        '<body name="link4"', '<frame pos="0.1 0 0" euler="0 0 30"><body name="link4"'
+    ).replace(
         '<body name="tool" pos="0 0 0.05" euler="0 90 0"/>\n              </body>\n'
         "            </body>",
         '<body name="tool" pos="0 0 0.05" euler="0 90 0"/>\n              </body>\n'
         "            </body></frame>",
     )
     assert "</frame>" in text
-    with pytest.raises(InvalidInputError, match="<frame>"):
-        mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits())
+    model = pin.buildModelFromXML(mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits()))
+    reference = mujoco.MjModel.from_xml_string(text)
+    rng = np.random.default_rng(3)
+    for _ in range(10):
+        q = {name: rng.uniform(-0.05, 0.1) for name in JOINTS}
+        ours, theirs = _poses(model, q), mujoco_poses(reference, q)
+        for body in BODIES:
+            assert np.abs(ours[body] - theirs[body]).max() < 1e-12, body
