@@ -67,7 +67,7 @@ MINI = """<mujoco model="mini">
             material="orange"/>
         <body name="fore" pos="0 0 0.3">
           <joint name="elbow" class="offset"/>
-          <geom name="fore_visual" class="visual" mesh="finger" rgba="0 0 1 1"
+          <geom name="fore_visual" class="visual" mesh="finger" material="grey" rgba="0 0 1 1"
               pos="0.01 0 0.05" euler="0.2 0 0"/>
           <site name="tcp" pos="0 0 0.2" euler="0 0.5 0"/>
           <body name="left_finger" pos="0 0.02 0.15">
@@ -115,6 +115,7 @@ SCENE = """<mujoco model="mini scene">
   <worldbody>
     <light pos="0 0 1.5" dir="0 0 -1" directional="true"/>
     <geom name="floor" size="0 0 0.05" type="plane" material="groundplane"/>
+    <geom name="table" type="box" size="0.5 0.5 0.02" pos="1 0 0.3"/>
   </worldbody>
 </mujoco>
 """
@@ -235,7 +236,8 @@ def test_menagerie_scene_with_keyframe_loads_without_its_floor(client: TestClien
     assert reference.nkey == 1
     _check_fk(client, reference, seed=5)
     urdf = client.get("/robots/mini/urdf").text
-    assert "floor" not in urdf and "plane" not in urdf and "groundplane" not in urdf
+    # the world body's geoms (the floor, a table) are the scene's, not the robot's
+    assert "floor" not in urdf and "table" not in urdf and "groundplane" not in urdf
 
 
 def test_gripper_arm_tips_at_its_tcp_site_with_colours(client: TestClient) -> None:
@@ -257,27 +259,31 @@ def test_gripper_arm_tips_at_its_tcp_site_with_colours(client: TestClient) -> No
 @pytest.mark.parametrize(
     ("old", "new", "named"),
     [
-        ('<joint name="shoulder"/>', '<joint name="shoulder" type="ball"/>', "'shoulder'"),
+        (
+            '<joint name="shoulder"/>',
+            '<joint name="shoulder" type="ball" range="0 1"/>',
+            "joint 'shoulder' of type 'ball'",
+        ),
         (
             '<body name="base" pos="0 0 0.1" childclass="arm">',
             '<body name="base"><freejoint name="float"/>',
-            "'float'",
+            "joint 'float' of type 'free'",
         ),
         ('polycoef="0.001 1 0 0 0"', 'polycoef="0 1 0.5 0 0"', "polycoef"),
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<tendon tendon1="split"/>',
-            "<tendon>",
+            "<tendon> is not supported: a tendon coupling joints",
         ),
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<connect name="loop" body1="left_finger" body2="right_finger" anchor="0 0 0"/>',
-            "<connect name='loop'>",
+            "<connect name='loop'> is not supported: it closes a kinematic loop",
         ),
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<weld body1="left_finger" body2="right_finger"/>',
-            "<weld>",
+            "<weld> is not supported: it welds",
         ),
     ],
 )
