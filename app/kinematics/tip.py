@@ -14,10 +14,13 @@ finger**, defined on Pinocchio's joint tree (fixed joints merged into the links 
 - a *finger link* is a link moved by a finger branch (one in its support);
 - among the other links, the tip is the one with the most moving joints to the root; on a
   tie (links held by the same joint through fixed joints, e.g. a flange, a hand, a TCP, or
-  fingers fixed to the hand), a *bare* link (no ``<visual>`` and no ``<collision>``: a
-  frame marker such as ``tool0`` or a TCP) before one with geometry, then the one with the
-  most fixed joints below that joint (the TCP beyond the hand beyond the flange), then the
-  one defined last.
+  fingers fixed to the hand), a link *named like a tool frame* first (:data:`TOOL_NAME`:
+  ``tcp``, ``flange``, ``attachment``, ``tool``, ``ee``, ``eef``, ``end_effector``,
+  ``grasp`` as a word of its name, e.g. ``tool0``, ``panda_hand_tcp``, ``link_eef``, an
+  MJCF ``attachment_site`` of MuJoCo Menagerie's UR5e), then a *bare* link (no
+  ``<visual>`` and no ``<collision>``: a frame marker such as ``tool0`` or a TCP) before
+  one with geometry, then the one with the most fixed joints below that joint (the TCP
+  beyond the hand beyond the flange), then the one defined last.
 
 If every moving link is a finger link (a bare gripper), the deepest link is the tip, by the
 same ordering over all links. A lone prismatic or revolute joint at the end of an arm (a
@@ -26,12 +29,19 @@ linear axis, a one-jaw gripper) is not a finger by this rule: its link is the ti
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from xml.etree.ElementTree import Element
 
 import pinocchio as pin
 
 from app.kinematics.joint_types import PRISMATIC_MODELS
+
+#: A link named like a tool frame (a word of its name, letters not run on: ``tool0``,
+#: ``ee_link``, ``attachment_site``; not ``knee``).
+TOOL_NAME = re.compile(
+    r"(?<![a-z])(tcp|flange|attachment|tool|ee|eef|end_?effector|grasp)(?![a-z])", re.I
+)
 
 
 def _gripper_joints(model: pin.Model) -> set[int]:
@@ -85,8 +95,10 @@ def default_tip(model: pin.Model, link_frames: Iterable[int], bare: Iterable[int
         parent = model.frames[f.parentFrame]
         fixed[fid] = 0 if parent.parentJoint != f.parentJoint else fixed[f.parentFrame] + 1
 
-    def key(fid: int) -> tuple[int, bool, int, int]:
-        return moving[model.frames[fid].parentJoint], fid in bare, fixed[fid], fid
+    def key(fid: int) -> tuple[int, bool, bool, int, int]:
+        frame = model.frames[fid]
+        named = TOOL_NAME.search(frame.name) is not None
+        return moving[frame.parentJoint], named, fid in bare, fixed[fid], fid
 
     heads = finger_branches(model)
     arm = [

@@ -74,8 +74,39 @@ def test_tcp_marker_before_geometry_on_the_same_joint() -> None:
         ("finger_a_tip", "fixed", "finger_a_link", "finger_a_tip_link", ""),
     ]
     assert _tip(ARM + fixed, bare={"tcp"}) == "tcp"
-    # without a bare frame: the farthest link held by the last joint
-    assert _tip(ARM + fixed[1:]) == "finger_a_tip_link"
+    # without a bare frame: the link named like a tool frame, not the fingers beyond it
+    assert _tip(ARM + fixed[1:]) == "flange"
+    # and without one either: the farthest link held by the last joint
+    unnamed = [(j, t, "l3" if p == "flange" else p, c, x) for j, t, p, c, x in fixed[1:]]
+    assert _tip(ARM[:3] + unnamed) == "finger_a_tip_link"
+
+
+def test_a_link_named_like_a_tool_frame_first_among_equally_deep_ones() -> None:
+    """Among links held by the last joint, one named like a tool frame (Menagerie UR5e's
+    ``attachment_site``, a ``tool0``, an ``ee_link``) before a bare marker farther out; a
+    deeper link still wins, a name inside a word (``knee``) is no tool frame, and fingers
+    are never the tip whatever their names."""
+    arm = ARM[:3]  # ends at l3, which has geometry
+    frames = [
+        ("site_joint", "fixed", "l3", "attachment_site", ""),
+        ("marker_joint", "fixed", "l3", "marker", ""),
+        ("far_joint", "fixed", "marker", "far", ""),
+    ]
+    bare = {"attachment_site", "marker", "far", "knee"}
+    assert _tip(arm + frames, bare=bare) == "attachment_site"
+    assert _tip(arm + frames[1:], bare=bare) == "far"  # no name: the farthest bare frame
+    knee = [("site_joint", "fixed", "l3", "knee", ""), *frames[1:]]
+    assert _tip(arm + knee, bare=bare) == "far"
+    for name in ("tool0", "ee_link", "link_eef", "j2s6s200_end_effector", "hand_tcp"):
+        renamed = [("site_joint", "fixed", "l3", name, ""), *frames[1:]]
+        assert _tip(arm + renamed, bare=bare | {name}) == name
+    jaws = [
+        ("jaw_a", "prismatic", "l3", "tool_jaw_a", ""),
+        ("jaw_b", "prismatic", "l3", "tool_jaw_b", ""),
+    ]
+    assert _tip(arm + jaws) == "l3"
+    deeper = [("a4", "revolute", "l3", "wrist", "")]
+    assert _tip(arm + frames + deeper, bare=bare) == "wrist"
 
 
 #: The tips of the catalog robots' own URDFs (the catalog names them; an upload does not).
