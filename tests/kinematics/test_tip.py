@@ -84,7 +84,7 @@ def test_tcp_marker_before_geometry_on_the_same_joint() -> None:
 def test_a_link_named_like_a_tool_frame_first_among_equally_deep_ones() -> None:
     """Among links held by the last joint, one named like a tool frame (Menagerie UR5e's
     ``attachment_site``, a ``tool0``, an ``ee_link``) before a bare marker farther out; a
-    deeper link still wins, a name inside a word (``knee``) is no tool frame, and fingers
+    deeper link still wins, a name inside a word (``knee``, ``tooling``) is no tool frame, and fingers
     are never the tip whatever their names."""
     arm = ARM[:3]  # ends at l3, which has geometry
     frames = [
@@ -92,10 +92,14 @@ def test_a_link_named_like_a_tool_frame_first_among_equally_deep_ones() -> None:
         ("marker_joint", "fixed", "l3", "marker", ""),
         ("far_joint", "fixed", "marker", "far", ""),
     ]
-    bare = {"attachment_site", "marker", "far", "knee"}
+    bare = {"attachment_site", "marker", "far", "knee", "tooling"}
     assert _tip(arm + frames, bare=bare) == "attachment_site"
     assert _tip(arm + frames[1:], bare=bare) == "far"  # no name: the farthest bare frame
-    knee = [("site_joint", "fixed", "l3", "knee", ""), *frames[1:]]
+    knee = [
+        ("site_joint", "fixed", "l3", "knee", ""),
+        ("rack_joint", "fixed", "l3", "tooling", ""),
+        *frames[1:],
+    ]
     assert _tip(arm + knee, bare=bare) == "far"
     for name in ("tool0", "ee_link", "link_eef", "j2s6s200_end_effector", "hand_tcp"):
         renamed = [("site_joint", "fixed", "l3", name, ""), *frames[1:]]
