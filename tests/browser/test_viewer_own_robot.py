@@ -1,8 +1,9 @@
 """The viewer on a lab's own description package: meshes from GET /robots/{id}/files/...
 
 The packages are uploaded through the API (POST /robots/package) as a lab would: the
-catalog's Panda laid out as a ROS package (STL and Collada meshes by relative path), and a
-one-link robot whose mesh is a Wavefront OBJ cube.
+catalog's Panda laid out as a ROS package (STL and Collada meshes by relative path), a
+one-link robot whose mesh is a Wavefront OBJ cube, and the same cube as an MJCF robot
+whose materials give the colours (MuJoCo Menagerie's visual meshes are OBJ files).
 """
 
 from __future__ import annotations
@@ -117,4 +118,45 @@ def test_obj_mesh_of_an_own_package_is_drawn(page: Tab) -> None:
     )
     assert triangles == 12
     page.shot("obj")
+    assert page.errors() == []
+
+
+CUBE_MJCF = b"""<mujoco model="cube_mjcf">
+  <asset>
+    <material name="orange" rgba="1 0.5 0 1"/>
+    <mesh name="cube" file="cube.obj"/>
+  </asset>
+  <worldbody>
+    <body name="base">
+      <body name="arm">
+        <joint name="j1" axis="0 0 1" range="-1.5 1.5"/>
+        <geom type="mesh" mesh="cube" material="orange" contype="0" conaffinity="0"
+            group="2" mass="1"/>
+        <geom type="box" size="0.01 0.01 0.01" pos="0.3 0 0.1" rgba="0 0 1 1"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+
+
+def test_mjcf_materials_colour_the_drawn_meshes(page: Tab) -> None:
+    upload(page, "cube_mjcf", {"cube.xml": CUBE_MJCF, "cube.obj": CUBE_OBJ}, "cube.xml")
+    open_and_record(page, "cube_mjcf")
+    stats = page.page.evaluate("denavit.viewer.robot.stats")
+    assert (stats["meshes"], stats["loaded"], stats["failed"]) == (1, 1, 0), stats
+    # Every drawn mesh's colour, in linear RGB, by its triangle count (12: the OBJ cube;
+    # the box primitive: urdf-loader's unit box).
+    colours = page.page.evaluate(
+        """(() => { const out = []; denavit.viewer.robot.root.traverse((o) => {
+             if (o.isMesh) out.push([o.geometry.attributes.position.count,
+                                     o.material.color.toArray()]); }); return out; })()"""
+    )
+    obj = [c for n, c in colours if n == 36]
+    assert len(obj) == 1 and len(colours) == 2, colours
+    r, g, b = obj[0]
+    assert r == 1 and 0 < g < 0.6 and b == 0, obj  # orange (sRGB 0.5 is 0.21 linear)
+    box = [c for n, c in colours if n != 36]
+    assert box[0] == [0, 0, 1], colours
+    page.shot("mjcf-colours")
     assert page.errors() == []

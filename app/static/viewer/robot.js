@@ -58,7 +58,13 @@ export class RobotView {
           finish();
         };
         if (/\.obj$/i.test(path)) {
-          new OBJLoader(mgr).load(path, (obj) => settle(obj), null, (e) => settle(null, e));
+          // The OBJ loader gives its own grey material: draw it in the URDF's colour, as
+          // urdf-loader does for STL and Collada (e.g. an MJCF robot's material rgba).
+          const coloured = (obj) => {
+            obj.traverse((c) => { if (c.isMesh) c.material = material; });
+            settle(obj);
+          };
+          new OBJLoader(mgr).load(path, coloured, null, (e) => settle(null, e));
         } else if (/\.(stl|dae)$/i.test(path)) {
           loader.defaultMeshLoader(path, mgr, material, settle);
         } else {
