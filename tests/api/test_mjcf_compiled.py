@@ -13,7 +13,8 @@ configurations (fixed seed). A mimic follower, which ``mj_kinematics`` leaves wh
   a floor plane, lights and textures loads; the floor is not part of the robot.
 - 6: the default tip of a gripper arm is its TCP site, not a finger; the site is a frame;
   materials and ``rgba`` reach GET /robots/{id}/urdf.
-- What the service cannot model is a 422 naming the element.
+- What the service cannot model is a 422 naming the element (a ball or free joint, a
+  nonlinear or tendon coupling, a loop, a site named like a body), and nothing is stored.
 """
 
 from __future__ import annotations
@@ -280,6 +281,7 @@ def test_gripper_arm_tips_at_its_tcp_site_with_colours(client: TestClient) -> No
             '<connect name="loop" body1="left_finger" body2="right_finger" anchor="0 0 0"/>',
             "<connect name='loop'> is not supported: it closes a kinematic loop",
         ),
+        ('<site name="tcp"', '<site name="upper"', "<site name='upper'>: its name is already"),
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<weld body1="left_finger" body2="right_finger"/>',
