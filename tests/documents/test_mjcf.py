@@ -371,3 +371,23 @@ def test_frame_elements_are_read_as_mujoco_reads_them(tmp_path: Path) -> None:
         ours, theirs = _poses(model, q), mujoco_poses(reference, q)
         for body in BODIES:
             assert np.abs(ours[body] - theirs[body]).max() < 1e-12, body
+
+
+def test_several_joints_in_one_body_chain_in_mujocos_order(tmp_path: Path) -> None:
+    """A body with a hinge off its origin, a slide and a hinge with a ``ref``: MuJoCo
+    composes them in order (each about its anchor in the body frame)."""
+    text = ARM.replace(
+        '<joint name="j3" axis="1 0 0"/>',
+        '<joint name="j3" axis="1 0 0"/><joint name="j3b" type="slide" axis="0 1 1" '
+        'range="-0.1 0.1" ref="0.02"/><joint name="j3c" axis="0 1 0" pos="0.01 0.02 0.03" '
+        'range="-60 60" ref="10"/>',
+    )
+    model = pin.buildModelFromXML(mjcf_to_urdf(tmp_path, _write(tmp_path, text), XmlLimits()))
+    reference = mujoco.MjModel.from_xml_string(text)
+    rng = np.random.default_rng(9)
+    for _ in range(20):
+        q = {name: rng.uniform(-0.05, 0.1) for name in JOINTS}
+        q.update(j3b=rng.uniform(-0.1, 0.1), j3c=rng.uniform(-1.0, 1.0))
+        ours, theirs = _poses(model, q), mujoco_poses(reference, q)
+        for body in BODIES:
+            assert np.abs(ours[body] - theirs[body]).max() < 1e-12, body
