@@ -84,8 +84,8 @@ def test_tcp_marker_before_geometry_on_the_same_joint() -> None:
 def test_a_link_named_like_a_tool_frame_first_among_equally_deep_ones() -> None:
     """Among links held by the last joint, one named like a tool frame (Menagerie UR5e's
     ``attachment_site``, a ``tool0``, an ``ee_link``) before a bare marker farther out; a
-    deeper link still wins, a name inside a word (``knee``, ``tooling``) is no tool frame, and fingers
-    are never the tip whatever their names."""
+    deeper link still wins, a name inside a word (``knee``, ``tooling``) is no tool frame,
+    and fingers are never the tip whatever their names."""
     arm = ARM[:3]  # ends at l3, which has geometry
     frames = [
         ("site_joint", "fixed", "l3", "attachment_site", ""),
