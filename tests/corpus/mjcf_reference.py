@@ -13,7 +13,8 @@ when the geoms overlap) between the *collision geoms* (``contype`` or ``conaffin
 non-zero) of two bodies. MuJoCo collides a mesh as its convex hull, so the service is asked
 for its ``convex`` geometry. The pair filter is the service's documented rule
 (``app/kinematics/collision_pairs.py``), applied here to the MJCF tree without the service's
-code: each body with collision geoms is a link; links moved by the same joint (a jointless
+code: each body with collision geoms is a link (the world body's geoms, such as a scene's
+floor, are the environment, not the robot's); links moved by the same joint (a jointless
 body is welded to its parent) are never checked; links whose moving joints are one joint
 apart in the tree, bridging joints whose bodies carry no collision geom, are adjacent and
 never checked. MuJoCo's own ``<contact><exclude>`` and parent/child filters are *not* used
@@ -30,6 +31,8 @@ import numpy as np
 
 #: Joint types a kinematic arm may have (hinge: radians, slide: metres).
 _MOVING = {int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)}
+#: MuJoCo's default geom rgba; a geom rgba other than this overrides its material's.
+_DEFAULT_RGBA = (0.5, 0.5, 0.5, 1.0)
 
 
 @dataclass
@@ -134,24 +137,28 @@ class Reference:
 
     def visual_colours(self) -> dict[str, list[np.ndarray]]:
         """Body name → rgba of each of its visual-only geoms (contype = conaffinity = 0),
-        as MuJoCo renders it: the material's rgba when the geom has a material."""
+        as MuJoCo colours it: the geom's ``rgba`` when it differs from MuJoCo's default
+        (0.5 0.5 0.5 1: "it takes precedence over the material"), else its material's."""
         m = self.model
         out: dict[str, list[np.ndarray]] = {}
         for g in range(m.ngeom):
-            if m.geom_contype[g] or m.geom_conaffinity[g]:
+            if m.geom_contype[g] or m.geom_conaffinity[g] or not m.geom_bodyid[g]:
                 continue
             body = m.body(int(m.geom_bodyid[g])).name
             mat = int(m.geom_matid[g])
-            rgba = m.mat_rgba[mat] if mat >= 0 else m.geom_rgba[g]
+            own = np.array(m.geom_rgba[g], dtype=float)
+            default = np.allclose(own, _DEFAULT_RGBA, rtol=0, atol=1e-7)
+            rgba = m.mat_rgba[mat] if mat >= 0 and default else own
             out.setdefault(body, []).append(np.array(rgba, dtype=float))
         return out
 
     def collision_geoms(self) -> dict[str, list[int]]:
-        """Body name → its collision geoms (``contype`` or ``conaffinity`` non-zero)."""
+        """Body name → its collision geoms (``contype`` or ``conaffinity`` non-zero); the
+        world body's geoms (a scene's floor) are the environment, not a link of the robot."""
         m = self.model
         out: dict[str, list[int]] = {}
         for g in range(m.ngeom):
-            if m.geom_contype[g] or m.geom_conaffinity[g]:
+            if m.geom_bodyid[g] and (m.geom_contype[g] or m.geom_conaffinity[g]):
                 out.setdefault(m.body(int(m.geom_bodyid[g])).name, []).append(g)
         return out
 
