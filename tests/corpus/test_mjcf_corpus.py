@@ -76,8 +76,9 @@ UPLOADS = [
     # through gen3.xml itself: continuous joints, colours set by a default class.
     Upload("gen3_scene", "menagerie_gen3", "kinova_gen3/scene.xml", "pinch_site"),
     Upload("gen3", "menagerie_gen3", "kinova_gen3/gen3.xml", "pinch_site"),
-    # Trossen ViperX 300 S through its scene.xml and its vx300s.xml: childclass defaults (axes, ranges, slide
-    # fingers), a keyframe, fingers mirrored by a joint equality, a TCP site "pinch".
+    # Trossen ViperX 300 S through its scene.xml and its vx300s.xml: childclass defaults
+    # (axes, ranges, slide fingers), a keyframe, fingers mirrored by a joint equality (the
+    # follower, left_finger, sorts before its leader), a TCP site "pinch".
     Upload("vx300s_scene", "menagerie_vx300s", "trossen_vx300s/scene.xml", "pinch"),
     Upload("vx300s", "menagerie_vx300s", "trossen_vx300s/vx300s.xml", "pinch"),
 ]
