@@ -15,10 +15,11 @@ code:
   within the API's success tolerance (1e-5 m, 1e-5 rad);
 - self-collision: the colliding link pairs of POST /collisions/batch (``convex``: MuJoCo
   collides meshes as convex hulls) equal MuJoCo's (``mj_geomDistance``) on 20
-  configurations, some of them colliding, with the pair filter of the module docstring of
-  :mod:`tests.corpus.mjcf_reference`;
-- materials: each visual geom's colour (its material's rgba) is a colour of a visual of its
-  body's link in the stored URDF; the default tip is the model's TCP site, not a finger.
+  configurations, five of them folded until they collide, with the pair filter of the
+  module docstring of :mod:`tests.corpus.mjcf_reference` (also the pairs GET
+  /collision_pairs lists); pairs within 1e-5 m of contact may go either way;
+- materials: each visual geom's colour, as MuJoCo colours it, is a colour of a visual of
+  its body's link in the stored URDF; the default tip is the model's TCP site, not a finger.
 
 The Robotiq 2F-85 closes its four-bar linkages with ``<equality><connect>`` and drives its
 two fingers through the fixed ``<tendon>`` ``split``: a tree-shaped model cannot be that
