@@ -1,0 +1,1 @@
+"""A corpus of real robot description packages, uploaded through HTTP as a lab would."""
