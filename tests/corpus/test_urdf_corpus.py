@@ -77,6 +77,7 @@ CASES = [
         "fanuc_description/urdf/fanuc.urdf",
         srdf="fanuc_moveit_config/config/fanuc.srdf",
     ),
+    Case("kuka_kr10r900_2", "kuka_kr10_support/urdf/kr10r900_2.xacro"),
     Case(
         "robotiq_2f85",
         "robotiq_description/urdf/robotiq_2f_85_gripper.urdf.xacro",
@@ -137,9 +138,7 @@ def _reference(case: Case, prefix: Path) -> tuple[Reference, dict[str, str]]:
         return resolve_uri(uri, folder, shares, base)
 
     ref = Reference(urdf, mesh_file, srdf)
-    paths = {
-        uri: mesh_file(uri).relative_to(folder.resolve()).as_posix() for uri in ref.mesh_uris
-    }
+    paths = {uri: mesh_file(uri).relative_to(folder.resolve()).as_posix() for uri in ref.mesh_uris}
     return ref, paths
 
 
@@ -156,7 +155,9 @@ def prepared(request: pytest.FixtureRequest, corpus_client: TestClient) -> Prepa
         fields = {"srdf": case.srdf, "xacro_args": case.xacro_args or None}
         if case.srdf_xacro_args is not None:
             fields["srdf_xacro_args"] = case.srdf_xacro_args
-        r = upload_case(corpus_client, case.id.replace("_", "-"), case.folder, case.description, **fields)
+        r = upload_case(
+            corpus_client, case.id.replace("_", "-"), case.folder, case.description, **fields
+        )
         _PREPARED[case.id] = Prepared(case, r.status_code, r.json(), ref, paths)
     p = _PREPARED[case.id]
     assert p.status == 201, f"{case.id}: upload refused: {p.detail}"
@@ -218,7 +219,7 @@ def test_fk(prepared: Prepared, corpus_client: TestClient) -> None:
 def _ik_check(prepared: Prepared, client: TestClient, tip: str, group: dict | None) -> None:
     detail, ref = prepared.detail, prepared.ref
     rng = np.random.default_rng(7 + len(tip))
-    neutral = dict(zip((j["name"] for j in detail["joints"]), detail["neutral"]))
+    neutral = dict(zip((j["name"] for j in detail["joints"]), detail["neutral"], strict=True))
     moving = set(group["joints"]) if group else set(ref.actuated)
     configs = []
     for cfg in ref.random_configs(rng, IK_TARGETS):
@@ -240,10 +241,10 @@ def _ik_check(prepared: Prepared, client: TestClient, tip: str, group: dict | No
     out = r.json()
     names = out["joint_names"]
     verified = 0
-    for target, res in zip(targets, out["results"]):
+    for target, res in zip(targets, out["results"], strict=True):
         if not res["success"]:
             continue
-        cfg = dict(zip(names, res["q"]))
+        cfg = dict(zip(names, res["q"], strict=True))
         inside = all(
             ref.limits(j)[0] - 1e-9 <= cfg[j] <= ref.limits(j)[1] + 1e-9
             for j in names

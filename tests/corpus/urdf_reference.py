@@ -34,7 +34,7 @@ from lxml import etree
 
 #: ``ament_index_python.packages.get_package_share_directory``, as ament_index_python
 #: implements it (the package is part of ROS 2, not of PyPI).
-AMENT_INDEX_SHIM = '''
+AMENT_INDEX_SHIM = """
 import os
 
 
@@ -54,7 +54,7 @@ def get_package_prefix(package_name):
 
 def get_package_share_directory(package_name):
     return os.path.join(get_package_prefix(package_name), "share", package_name)
-'''
+"""
 
 XACRO_CLI = Path(sys.executable).parent / "xacro"
 
@@ -218,16 +218,17 @@ class Reference:
         """``n`` configurations (actuated joint → value) drawn uniformly within limits."""
         bounds = [self.limits(j) for j in self.actuated]
         return [
-            {j: float(rng.uniform(lo, hi)) for j, (lo, hi) in zip(self.actuated, bounds)}
+            {
+                j: float(rng.uniform(lo, hi))
+                for j, (lo, hi) in zip(self.actuated, bounds, strict=True)
+            }
             for _ in range(n)
         ]
 
     def fk(self, cfg: Mapping[str, float]) -> dict[str, np.ndarray]:
         """Every link's 4×4 pose in the root link's frame at ``cfg`` (mimics followed)."""
         self.urdf.update_cfg({j: cfg[j] for j in self.actuated})
-        return {
-            name: np.array(self.urdf.get_transform(name, self.root)) for name in self.links
-        }
+        return {name: np.array(self.urdf.get_transform(name, self.root)) for name in self.links}
 
     # ------------------------------------------------------------------ collisions
     def _link_geometry(self, link) -> list[tuple[object, np.ndarray]]:
@@ -248,7 +249,9 @@ class Reference:
             elif g.box is not None:
                 out.append((fcl.Box(*map(float, g.box.size)), origin))
             elif g.cylinder is not None:
-                out.append((fcl.Cylinder(float(g.cylinder.radius), float(g.cylinder.length)), origin))
+                out.append(
+                    (fcl.Cylinder(float(g.cylinder.radius), float(g.cylinder.length)), origin)
+                )
             elif g.sphere is not None:
                 out.append((fcl.Sphere(float(g.sphere.radius)), origin))
         return out
