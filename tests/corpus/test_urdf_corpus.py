@@ -52,9 +52,6 @@ class Case:
     srdf: str | None = None
     xacro_args: dict[str, str] = field(default_factory=dict)
     srdf_xacro_args: dict[str, str] | None = None
-    #: Whether some of the collision configurations must collide (arms do; a lone
-    #: gripper's fingers cannot reach each other).
-    collides: bool = True
 
     @property
     def folder(self) -> Path:
@@ -81,7 +78,6 @@ CASES = [
     Case(
         "robotiq_2f85",
         "robotiq_description/urdf/robotiq_2f_85_gripper.urdf.xacro",
-        collides=False,
     ),
     Case(
         "ur20_ros2",
@@ -310,5 +306,4 @@ def test_collisions(prepared: Prepared, corpus_client: TestClient) -> None:
         expected = ref.colliding(cfg, pairs)
         colliding += bool(expected)
         assert {frozenset(p) for p in got[i]} == expected, (i, cfg)
-    if prepared.case.collides:
-        assert colliding >= 1, f"{prepared.case.id}: no configuration collides"
+    assert colliding >= 1, f"{prepared.case.id}: no configuration collides"
