@@ -102,11 +102,16 @@ class Prepared:
 
 
 @pytest.fixture(scope="module")
-def corpus_client(tmp_path_factory: pytest.TempPathFactory) -> Iterator[TestClient]:
+def data_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The module's data directory (no answer may show it)."""
+    return tmp_path_factory.mktemp("corpus") / "data"
+
+
+@pytest.fixture(scope="module")
+def corpus_client(data_dir: Path) -> Iterator[TestClient]:
     """One app for the module (uploads are slow-ish): a fresh data directory."""
-    app = create_app(Settings(data_dir=tmp_path_factory.mktemp("corpus") / "data"))
-    with TestClient(app, raise_server_exceptions=False) as client:
-        yield client
+    with TestClient(create_app(Settings(data_dir=data_dir)), raise_server_exceptions=False) as c:
+        yield c
 
 
 _PREPARED: dict[str, Prepared] = {}
@@ -307,3 +312,47 @@ def test_collisions(prepared: Prepared, corpus_client: TestClient) -> None:
         colliding += bool(expected)
         assert {frozenset(p) for p in got[i]} == expected, (i, cfg)
     assert colliding >= 1, f"{prepared.case.id}: no configuration collides"
+
+
+# ------------------------------------------------------------------------------ refusals
+def _case(case_id: str) -> Case:
+    return next(c for c in CASES if c.id == case_id)
+
+
+def _assert_refused(r, field: str, names: str, data_dir: Path) -> None:
+    """A 422 problem naming ``field`` and ``names``, showing no server path."""
+    assert r.status_code == 422, r.text
+    problem = r.json()
+    assert problem["field"] == field, problem
+    assert names in problem["detail"], problem
+    for leak in (str(data_dir), str(data_dir.parent), "/tmp/", "/package/", "/work/"):
+        assert leak not in r.text, (leak, problem)
+
+
+def test_refused_missing_mesh(corpus_client: TestClient, data_dir: Path, tmp_path: Path) -> None:
+    """The IRB 2400 without one collision mesh its xacro names: a 422 naming that mesh
+    (its path in the archive), no server path; nothing stored."""
+    case = _case("abb_irb2400")
+    folder = tmp_path / case.id
+    shutil.copytree(case.folder, folder)
+    missing = "abb_irb2400_support/meshes/irb2400/collision/link_3.stl"
+    (folder / missing).unlink()
+    r = upload_case(corpus_client, "abb-missing-mesh", folder, case.description, srdf=case.srdf)
+    _assert_refused(r, "description", f"'{missing}'", data_dir)
+    assert corpus_client.get("/robots/abb-missing-mesh").status_code == 404
+
+
+def test_refused_unknown_variant(corpus_client: TestClient, data_dir: Path) -> None:
+    """The UR description with a ur_type it has no configuration for: xacro cannot load
+    config/ur99/…; a 422 naming that file (in the archive), no server path; nothing
+    stored."""
+    case = _case("ur20_ros2")
+    r = upload_case(
+        corpus_client,
+        "ur-unknown-variant",
+        case.folder,
+        case.description,
+        xacro_args={"name": "ur", "ur_type": "ur99"},
+    )
+    _assert_refused(r, "description", "'ur_description/config/ur99/", data_dir)
+    assert corpus_client.get("/robots/ur-unknown-variant").status_code == 404
