@@ -76,6 +76,11 @@ CASES = [
     ),
     Case("kuka_kr10r900_2", "kuka_kr10_support/urdf/kr10r900_2.xacro"),
     Case(
+        "motoman_sia20d",
+        "motoman_sia20d_support/urdf/sia20d.xacro",
+        srdf="motoman_sia20d_moveit_config/config/motoman_sia20d.srdf",
+    ),
+    Case(
         "robotiq_2f85",
         "robotiq_description/urdf/robotiq_2f_85_gripper.urdf.xacro",
     ),
