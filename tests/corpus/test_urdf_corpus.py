@@ -19,6 +19,7 @@ reference of :mod:`tests.corpus.urdf_reference` (the xacro CLI, yourdfpy, python
 
 from __future__ import annotations
 
+import posixpath
 import shutil
 import tempfile
 import zlib
@@ -29,6 +30,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from fastapi.testclient import TestClient
+from lxml import etree
 
 from app.main import create_app
 from app.settings import Settings
@@ -36,6 +38,7 @@ from tests.corpus.upload import upload_case
 from tests.corpus.urdf_reference import Reference, ament_prefix, resolve_uri, run_xacro
 
 HERE = Path(__file__).parent
+COLLADA = "http://www.collada.org/2005/11/COLLADASchema"
 FK_CONFIGS = 25
 IK_TARGETS = 100
 IK_NEEDED = 99
@@ -188,19 +191,28 @@ def _rot_angle(Ra: np.ndarray, Rb: np.ndarray) -> float:
 # ---------------------------------------------------------------------------------- tests
 @_params()
 def test_upload(prepared: Prepared, corpus_client: TestClient) -> None:
-    """201, the same actuated joints as the reference, every mesh stored and served."""
+    """201, the same actuated joints as the reference, every mesh (and every texture a
+    COLLADA mesh names) stored and served byte for byte."""
     detail, ref = prepared.detail, prepared.ref
     assert sorted(j["name"] for j in detail["joints"]) == sorted(ref.actuated)
+    assert detail["has_collision_geometry"]
     urdf = corpus_client.get(f"/robots/{detail['id']}/urdf")
     assert urdf.status_code == 200
     prefix = detail["files"]["uri_prefix"]
     stored = set()
-    for chunk in urdf.text.split('filename="')[1:]:
-        uri = chunk.split('"', 1)[0]
+    for mesh in etree.fromstring(urdf.content).iter("mesh"):
+        uri = mesh.get("filename")
         assert uri.startswith(prefix), uri
         stored.add(uri[len(prefix) :])
     assert stored == set(prepared.mesh_paths.values())
-    for path in sorted(stored):
+    files = set(stored)
+    for path in stored:
+        if path.endswith(".dae"):
+            images = etree.parse(str(prepared.case.folder / path)).iter(f"{{{COLLADA}}}image")
+            for image in images:
+                name = image.findtext(f"{{{COLLADA}}}init_from")
+                files.add(posixpath.normpath(posixpath.join(posixpath.dirname(path), name)))
+    for path in sorted(files):
         got = corpus_client.get(f"/robots/{detail['id']}/files/{path}")
         assert got.status_code == 200, path
         assert got.content == (prepared.case.folder / path).read_bytes(), path
