@@ -133,12 +133,15 @@ def resolve_uri(uri: str, case: Path, shares: Mapping[str, Path], base: Path) ->
         pkg, _, rest = uri[len("package://") :].partition("/")
         path = packages[pkg] / unquote(rest)
     elif uri.startswith("file://"):
-        raw = Path(unquote(uri[len("file://") :]))
-        path = raw if raw.is_absolute() else base / raw
-        if raw.is_absolute():  # through the prefix's share links: back into the case
-            for share in shares.values():
-                if share in raw.parents or share == raw:
+        text = unquote(uri[len("file://") :])
+        if text.startswith("/"):  # file:///abs and file:////abs (xacro's "file:///$(find)")
+            raw = Path("/" + text.lstrip("/"))
+            path = raw
+            for share in shares.values():  # through the prefix's share links: into the case
+                if share in raw.parents:
                     path = share.resolve() / raw.relative_to(share)
+        else:
+            path = base / text
     else:
         path = base / unquote(uri)
     real = path.resolve()
