@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import posixpath
 import shutil
-import tempfile
 import zlib
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -123,7 +122,10 @@ def corpus_client(data_dir: Path) -> Iterator[TestClient]:
         yield c
 
 
-_PREPARED: dict[str, Prepared] = {}
+@pytest.fixture(scope="module")
+def uploads() -> dict[str, Prepared]:
+    """The cases uploaded to this module's app so far (case id → what it answered)."""
+    return {}
 
 
 def _reference(case: Case, prefix: Path) -> tuple[Reference, dict[str, str]]:
@@ -153,23 +155,25 @@ def _reference(case: Case, prefix: Path) -> tuple[Reference, dict[str, str]]:
 
 
 @pytest.fixture
-def prepared(request: pytest.FixtureRequest, corpus_client: TestClient) -> Prepared:
+def prepared(
+    request: pytest.FixtureRequest,
+    corpus_client: TestClient,
+    uploads: dict[str, Prepared],
+    tmp_path_factory: pytest.TempPathFactory,
+) -> Prepared:
     """The case of the test's parameter, uploaded once per module, with its reference."""
     case: Case = request.param
-    if case.id not in _PREPARED:
-        prefix = Path(tempfile.mkdtemp(prefix=f"corpus-{case.id}-"))
-        try:
-            ref, paths = _reference(case, prefix)
-        finally:
-            shutil.rmtree(prefix, ignore_errors=True)
+    if case.id not in uploads:
+        prefix = tmp_path_factory.mktemp(f"prefix-{case.id}")
+        ref, paths = _reference(case, prefix)
         fields = {"srdf": case.srdf, "xacro_args": case.xacro_args or None}
         if case.srdf_xacro_args is not None:
             fields["srdf_xacro_args"] = case.srdf_xacro_args
         r = upload_case(
             corpus_client, case.id.replace("_", "-"), case.folder, case.description, **fields
         )
-        _PREPARED[case.id] = Prepared(case, r.status_code, r.json(), ref, paths)
-    p = _PREPARED[case.id]
+        uploads[case.id] = Prepared(case, r.status_code, r.json(), ref, paths)
+    p = uploads[case.id]
     assert p.status == 201, f"{case.id}: upload refused: {p.detail}"
     return p
 
