@@ -52,13 +52,15 @@ class Case:
 
     id: str
     description: str
+    #: The case folder, when another case's (the same package uploaded another way).
+    folder_id: str | None = None
     srdf: str | None = None
     xacro_args: dict[str, str] = field(default_factory=dict)
     srdf_xacro_args: dict[str, str] | None = None
 
     @property
     def folder(self) -> Path:
-        return HERE / self.id
+        return HERE / (self.folder_id or self.id)
 
 
 CASES = [
@@ -92,6 +94,13 @@ CASES = [
         "ur_description/urdf/ur.urdf.xacro",
         srdf="ur_moveit_config/srdf/ur.srdf.xacro",
         xacro_args={"name": "ur", "ur_type": "ur20"},
+    ),
+    Case(
+        "ur20_ros2_abs_paths",
+        "ur_description/urdf/ur.urdf.xacro",
+        folder_id="ur20_ros2",
+        srdf="ur_moveit_config/srdf/ur.srdf.xacro",
+        xacro_args={"name": "ur", "ur_type": "ur20", "force_abs_paths": "true"},
     ),
     Case("xarm6", "xarm_description/urdf/xarm_device.urdf.xacro", xacro_args={"dof": "6"}),
 ]
