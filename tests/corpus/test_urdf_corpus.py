@@ -90,6 +90,11 @@ CASES = [
         "robotiq_description/urdf/robotiq_2f_85_gripper.urdf.xacro",
     ),
     Case(
+        "ur20_ros1",
+        "ur_description/urdf/ur20.xacro",
+        srdf="ur20_moveit_config/config/ur20.srdf",
+    ),
+    Case(
         "ur20_ros2",
         "ur_description/urdf/ur.urdf.xacro",
         srdf="ur_moveit_config/srdf/ur.srdf.xacro",

@@ -126,7 +126,8 @@ def run_xacro(
 def resolve_uri(uri: str, case: Path, shares: Mapping[str, Path], base: Path) -> Path:
     """The file of the case a mesh URI names (``package://``, ``file://`` or relative).
 
-    ``base`` is the folder of the description (for relative paths).
+    ``base`` is the folder of the description (for relative paths). The answer is the
+    file's path in the case folder (``case.resolve()`` / path in the archive).
     """
     packages = {name: share.resolve() for name, share in shares.items()}
     if uri.startswith("package://"):
@@ -144,9 +145,11 @@ def resolve_uri(uri: str, case: Path, shares: Mapping[str, Path], base: Path) ->
             path = base / text
     else:
         path = base / unquote(uri)
-    real = path.resolve()
-    assert case.resolve() in real.parents and real.is_file(), f"{uri} is not a case file"
-    return real
+    # The file's path in the case (a case may link a file to a byte-identical one of
+    # another case: its path stays this case's, its bytes are read through the link).
+    inside = Path(os.path.normpath(path))
+    assert case.resolve() in inside.parents and inside.is_file(), f"{uri} is not a case file"
+    return inside
 
 
 def srdf_disabled(srdf_text: str | None, links: Iterable[str]) -> set[frozenset[str]]:
