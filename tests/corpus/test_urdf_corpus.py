@@ -19,8 +19,10 @@ reference of :mod:`tests.corpus.urdf_reference` (the xacro CLI, yourdfpy, python
 
 from __future__ import annotations
 
+import io
 import posixpath
 import shutil
+import tarfile
 import zlib
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -33,7 +35,7 @@ from lxml import etree
 
 from app.main import create_app
 from app.settings import Settings
-from tests.corpus.upload import upload_case
+from tests.corpus.upload import pack_case, upload_case
 from tests.corpus.urdf_reference import Reference, ament_prefix, resolve_uri, run_xacro
 
 HERE = Path(__file__).parent
@@ -392,3 +394,25 @@ def test_refused_unknown_variant(corpus_client: TestClient, data_dir: Path) -> N
     )
     _assert_refused(r, "description", "'ur_description/config/ur99/", data_dir)
     assert corpus_client.get("/robots/ur-unknown-variant").status_code == 404
+
+
+# --------------------------------------------------------------------------- the packing
+def test_pack_case_is_the_vendor_files_byte_for_byte() -> None:
+    """pack_case gives the same bytes every time; the archive holds every vendor file of
+    the folder as a regular file with its bytes (a linked file too), not PROVENANCE.md."""
+    folder = _case("ur20_ros1").folder
+    packed = pack_case(folder)
+    assert pack_case(folder) == packed
+    assert packed[4:8] == bytes(4)  # the gzip header's mtime: none
+    with tarfile.open(fileobj=io.BytesIO(packed)) as tf:
+        members = {m.name: m for m in tf.getmembers()}
+        expected = {
+            p.relative_to(folder).as_posix()
+            for p in folder.rglob("*")
+            if p.is_file() and p.name != "PROVENANCE.md"
+        }
+        assert set(members) == expected
+        for name, member in members.items():
+            assert member.isfile(), name
+            assert tf.extractfile(member).read() == (folder / name).read_bytes(), name
+    assert any((folder / name).is_symlink() for name in members)
