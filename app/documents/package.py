@@ -183,8 +183,11 @@ class _Resolver:
             where = current.relative_to(self.root).as_posix()
             try:
                 references = mesh_references(current)
-            except (MeshFileError, OSError) as exc:
+            except MeshFileError as exc:  # its message names no path
                 raise self._refuse("mesh", uri, f"{where} cannot be read ({exc})") from None
+            except OSError as exc:  # str(exc) would show where the package is unpacked
+                why = exc.strerror or type(exc).__name__
+                raise self._refuse("mesh", uri, f"{where} cannot be read ({why})") from None
             for ref in references:
                 rel = self._confine_reference(uri, where, ref.what, ref.name, folder)
                 target = self.root / rel

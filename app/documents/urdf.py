@@ -175,6 +175,9 @@ def _check_joint(joint: Element, name: str, jtype: str, field: str) -> None:
         limit = joint.find("limit")
         if limit is None:
             raise InvalidInputError(f"joint {name!r}: a {jtype} joint needs <limit>", field)
+        for attr in ("effort", "velocity"):  # urdfdom refuses a limit without them
+            if limit.get(attr) is None:
+                raise InvalidInputError(f"joint {name!r}: <limit> needs {attr}=", field)
         lower = float(limit.get("lower", 0.0))
         upper = float(limit.get("upper", 0.0))
         if lower > upper:
@@ -343,7 +346,9 @@ def build_checked_model(
     except InvalidInputError as exc:  # a mimic joint the builder refuses, named
         raise InvalidInputError(exc.message, urdf_field) from None
     except (ValueError, RuntimeError, IndexError, KeyError, TypeError) as exc:
-        raise InvalidInputError(f"Pinocchio rejected the URDF ({exc})", urdf_field) from None
+        # Pinocchio's messages start with the C++ source file and function: keep the reason.
+        why = " ".join(str(exc).split("message:")[-1].split()) or type(exc).__name__
+        raise InvalidInputError(f"Pinocchio rejected the URDF ({why})", urdf_field) from None
     if robot.n == 0:
         raise InvalidInputError(
             "the URDF has no actuated joint (revolute, continuous or prismatic)", urdf_field
