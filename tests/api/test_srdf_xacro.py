@@ -27,6 +27,7 @@ from pathlib import Path
 import pytest
 from fastapi.testclient import TestClient
 
+from app.main import create_app
 from tests.helpers import ROOT, problem
 from tests.packages import zip_bytes
 
@@ -236,3 +237,39 @@ def test_plain_srdf_holding_xacro_is_a_422_naming_it(
         client.post("/robots/urdf", json={"name": "ur", "urdf": urdf, "srdf": text}), 422, "srdf"
     )
     assert words in body["detail"]
+
+
+#: The macro with a tool group and an end effector at the wrist (MoveIt configs of a UR
+#: with a tool add these): the longest-chain rule alone would pick ``tool0``.
+WITH_END_EFFECTOR = UR_MACRO_SRDF_XACRO.replace(
+    "  </xacro:macro>",
+    '    <group name="${prefix}tool"><link name="${prefix}tool0"/></group>\n'
+    '    <end_effector name="${prefix}tool" parent_link="${prefix}wrist_3_link" '
+    'group="${prefix}tool" parent_group="${prefix}${name}_manipulator"/>\n'
+    "  </xacro:macro>",
+)
+
+
+def test_default_tip_of_a_package_is_its_srdf_end_effector(
+    client: TestClient, registry, settings, tmp_path: Path
+) -> None:
+    srdf = "ws/ur_moveit_config/srdf/ur.srdf.xacro"
+    args = '{"name": "ur5"}'
+    bare = client.post(
+        "/robots/package",
+        data={"name": "bare", "description": "ws/ur_description/urdf/ur5.urdf"},
+        files={"archive": ("ws.zip", zip_bytes(ur_files(registry)), "application/zip")},
+    )
+    assert bare.status_code == 201, bare.text
+    assert bare.json()["end_effector"] == "tool0"  # the longest-chain rule's pick
+    files = ur_files(registry, WITH_END_EFFECTOR)
+    reference = xacro_cli(files, tmp_path, "name:=ur5")
+    (ee,) = reference.iter("end_effector")
+    r = _post(client, files, srdf=srdf, xacro_args=args)
+    assert r.status_code == 201, r.text
+    detail = client.get("/robots/ur").json()
+    assert detail["end_effector"] == ee.get("parent_link") == "wrist_3_link"
+    assert [e["name"] for e in detail["end_effectors"]] == ["tool"]
+    assert [g["name"] for g in detail["groups"]] == [g.get("name") for g in reference.iter("group")]
+    with TestClient(create_app(settings)) as again:  # the stored robot, read back
+        assert again.get("/robots/ur").json()["end_effector"] == "wrist_3_link"
