@@ -11,8 +11,10 @@ reads the URDF the way robot_state_publisher / joint_state_publisher do instead:
    (a ``<mimic>`` on a fixed joint moves nothing and is ignored) and composes chains to
    their root leader, as joint_state_publisher does: a follower ``f = m₂·g + o₂`` of a
    follower ``g = m₁·r + o₁`` of ``r`` is ``f = (m₁·m₂)·r + (m₂·o₁ + o₂)``. An unknown or
-   fixed leader, a cycle, and a continuous joint on either side (Pinocchio cannot mimic
-   its (cos θ, sin θ) configuration) are refused naming the joint;
+   fixed leader, a cycle, and a continuous root leader (Pinocchio cannot mimic its
+   (cos θ, sin θ) configuration) are refused naming the joint; a continuous follower is
+   built as an unbounded revolute joint (the same motion: it has no configuration of its
+   own);
 2. the model is built with ``mimic=False`` (every joint its own), in Pinocchio's usual
    depth-first order with siblings by name, unless a root leader would then come after
    one of its followers: the siblings are then ordered so that every leader's branch comes
@@ -33,15 +35,20 @@ import heapq
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-from xml.etree.ElementTree import Element, tostring
+from xml.etree.ElementTree import Element, SubElement, tostring
 
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
-#: Joint types a follower or its root leader may have (one configuration value each).
-MIMIC_TYPES = ("revolute", "prismatic")
+#: Joint types a root leader may have (one configuration value each).
+LEADER_TYPES = ("revolute", "prismatic")
+#: Joint types a follower may have: a continuous follower (the Robotiq 2F-85's inner
+#: knuckles) is no configuration entry, so it is built as an unbounded revolute joint.
+FOLLOWER_TYPES = ("revolute", "prismatic", "continuous")
+#: The ``<limit>`` a continuous follower is built with (Pinocchio drops a mimic's limits).
+_FOLLOWER_LIMIT = {"lower": "-10000", "upper": "10000", "effort": "0", "velocity": "0"}
 #: The prefix of the temporary joint names that set Pinocchio's order (never seen outside).
 _ORDER_PREFIX = "denavit.order."
 
@@ -73,7 +80,7 @@ def mimic_specs(root: Element, field: str = "urdf") -> dict[str, MimicSpec]:
     """Every mimic follower of the URDF ``root`` (literal names), composed to its root
     leader (module doc, step 1), keyed by follower name; raises
     :class:`InvalidInputError` (``field``) naming the joint for an unknown, fixed or
-    continuous leader, a continuous follower, or a cycle."""
+    continuous leader, or a cycle."""
     types: dict[str, str] = {}
     direct: dict[str, tuple[str, float, float]] = {}
     for joint in root.findall("joint"):
@@ -109,14 +116,23 @@ def mimic_specs(root: Element, field: str = "urdf") -> dict[str, MimicSpec]:
             multiplier, offset = multiplier * m, multiplier * o + offset
             chain.append(leader)
             current = leader
-        for joint in (follower, current):
-            if types[joint] not in MIMIC_TYPES:
-                what = "follower" if joint == follower else f"leader of {follower!r}"
-                raise InvalidInputError(
-                    f"joint {joint!r}: a {types[joint]} joint cannot be a mimic {what} "
-                    f"(only {' or '.join(MIMIC_TYPES)} joints)",
-                    field,
-                )
+        if types[follower] not in FOLLOWER_TYPES:
+            raise InvalidInputError(
+                f"joint {follower!r}: a {types[follower]} joint cannot be a mimic follower "
+                f"(only {', '.join(FOLLOWER_TYPES)} joints)",
+                field,
+            )
+        if types[current] not in LEADER_TYPES:
+            raise InvalidInputError(
+                f"joint {current!r}: a {types[current]} joint cannot be the mimic leader of "
+                f"{follower!r} (only {' or '.join(LEADER_TYPES)} joints"
+                + (
+                    ": Pinocchio cannot mimic a continuous joint's (cos θ, sin θ) configuration)"
+                    if types[current] == "continuous"
+                    else ")"
+                ),
+                field,
+            )
         if not (math.isfinite(multiplier) and math.isfinite(offset)):
             raise InvalidInputError(
                 f"joint {follower!r}: its mimic chain composes to a non-finite multiplier "
@@ -229,10 +245,15 @@ def build_model(urdf_text: str, root: Element | None = None, field: str = "urdf"
         root = parse_literal_xml(urdf_text, field, TRUSTED)
     specs = mimic_specs(root, field)
     order = _joint_order(root, specs, field) if specs else None
-    if order is None:
+    continuous = {
+        j.get("name") or ""
+        for j in root.findall("joint")
+        if j.get("type") == "continuous" and j.get("name") in specs
+    }
+    if order is None and not continuous:
         model = pin.buildModelFromXML(urdf_text, mimic=False)
     else:
-        model = _build_in_order(root, order)
+        model = _build_copy(root, order, continuous)
     for spec in sorted(specs.values(), key=lambda s: model.getJointId(s.follower)):
         model = pin.transformJointIntoMimic(
             model,
@@ -244,14 +265,22 @@ def build_model(urdf_text: str, root: Element | None = None, field: str = "urdf"
     return model
 
 
-def _build_in_order(root: Element, order: list[str]) -> pin.Model:
-    """The model with its joints in ``order``: Pinocchio visits siblings by name, so each
-    joint is built under a temporary name that sorts by its rank, then given its own."""
+def _build_copy(root: Element, order: list[str] | None, continuous: set[str]) -> pin.Model:
+    """The model of a copy of ``root`` whose joints Pinocchio visits in ``order`` (when
+    given: it visits siblings by name, so each joint is built under a temporary name that
+    sorts by its rank, then given its own) and whose ``continuous`` followers are unbounded
+    revolute joints (the same motion; a follower has no configuration of its own)."""
     copy = parse_literal_xml(tostring(root, encoding="unicode"), "urdf", TRUSTED)
+    order = order or []
     width = len(str(len(order)))
     temporary = {name: f"{_ORDER_PREFIX}{rank:0{width}d}" for rank, name in enumerate(order)}
     for joint in copy.findall("joint"):
         name = joint.get("name") or ""
+        if name in continuous:
+            joint.set("type", "revolute")
+            for limit in joint.findall("limit"):
+                joint.remove(limit)
+            SubElement(joint, "limit", _FOLLOWER_LIMIT)
         if name in temporary:
             joint.set("name", temporary[name])
         for mimic in joint.findall("mimic"):
