@@ -164,8 +164,8 @@ def _joint_order(root: Element, specs: Mapping[str, MimicSpec], field: str) -> l
     def path(joint: str) -> list[str]:
         """The joints from the root down to ``joint``."""
         out = [joint]
-        while parent_link[out[-1]] in parent_joint:
-            out.append(parent_joint[parent_link[out[-1]]])
+        while parent_link[out[-1]] in parent_joint and len(out) <= len(child_of):
+            out.append(parent_joint[parent_link[out[-1]]])  # (bounded: no loop on a cycle)
         return out[::-1]
 
     before: dict[str, set[str]] = {}  # sibling joint -> siblings that must come before it

@@ -19,49 +19,7 @@ import pytest
 import yourdfpy
 
 from tests.helpers import problem
-
-LIMIT = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
-
-
-def _joint(
-    name: str,
-    parent: str,
-    child: str,
-    xyz: str,
-    axis: str,
-    jtype: str = "revolute",
-    mimic: tuple[str, float, float] | None = None,
-) -> str:
-    m = (
-        f'<mimic joint="{mimic[0]}" multiplier="{mimic[1]!r}" offset="{mimic[2]!r}"/>'
-        if mimic
-        else ""
-    )
-    return (f'<joint name="{name}" type="{jtype}"><parent link="{parent}"/><child link="{child}"/>'
-            f'<origin xyz="{xyz}" rpy="0.1 -0.2 0.3"/><axis xyz="{axis}"/>'
-            f'{LIMIT if jtype != "continuous" else ""}{m}</joint>')  # fmt: skip
-
-
-def gripper(
-    leader: str, follower: str, wrist: str, finger: str, follower_type: str = "revolute"
-) -> str:
-    """A wrist, two fingers on a palm, and a prismatic pad on the follower's finger.
-
-    ``follower`` mimics ``leader`` (×-0.8, +0.1); both hang from the palm on sibling
-    branches, so Pinocchio visits them in name order.
-    """
-    links = "".join(f'<link name="{n}"/>' for n in ("base", "palm", "left", "right", "pad"))
-    return (
-        f'<robot name="gripper">{links}'
-        + _joint(wrist, "base", "palm", "0 0 0.1", "0 0 1")
-        + _joint(leader, "palm", "left", "0 0.03 0.05", "1 0 0")
-        + _joint(
-            follower, "palm", "right", "0 -0.03 0.05", "1 0 0", follower_type, (leader, -0.8, 0.1)
-        )
-        + _joint(finger, "right", "pad", "0 0 0.04", "0 1 0", "prismatic")
-        + "</robot>"
-    )
-
+from tests.mimic_robots import LIMIT, gripper, joint
 
 LINKS = ["palm", "left", "right", "pad"]
 
@@ -136,10 +94,10 @@ def _chain(order: tuple[str, str, str], flattened: bool) -> str:
     links = "".join(f'<link name="{n}"/>' for n in ("base", "palm", "left", "right", "pad"))
     return (
         f'<robot name="chain">{links}'
-        + _joint("wrist", "base", "palm", "0 0 0.1", "0 0 1")
-        + _joint(root, "palm", "left", "0 0.03 0.05", "1 0 0")
-        + _joint(mid, "palm", "right", "0 -0.03 0.05", "1 0 0", mimic=(root, 2.0, 0.1))
-        + _joint(last, "palm", "pad", "0.03 0 0.05", "0 1 0", mimic=last_mimic)
+        + joint("wrist", "base", "palm", "0 0 0.1", "0 0 1")
+        + joint(root, "palm", "left", "0 0.03 0.05", "1 0 0")
+        + joint(mid, "palm", "right", "0 -0.03 0.05", "1 0 0", mimic=(root, 2.0, 0.1))
+        + joint(last, "palm", "pad", "0.03 0 0.05", "0 1 0", mimic=last_mimic)
         + "</robot>"
     )
 
@@ -188,10 +146,10 @@ CARRIER = (
 CROSSED = (
     '<robot name="r">'
     + "".join(f'<link name="{n}"/>' for n in ("base", "x", "x2", "y", "y2"))
-    + _joint("x1", "base", "x", "0 0 0", "0 0 1")
-    + _joint("x2j", "x", "x2", "0 0 0", "0 0 1", mimic=("y1", 1.0, 0.0))
-    + _joint("y1", "base", "y", "0 0 0", "0 0 1")
-    + _joint("y2j", "y", "y2", "0 0 0", "0 0 1", mimic=("x1", 1.0, 0.0))
+    + joint("x1", "base", "x", "0 0 0", "0 0 1")
+    + joint("x2j", "x", "x2", "0 0 0", "0 0 1", mimic=("y1", 1.0, 0.0))
+    + joint("y1", "base", "y", "0 0 0", "0 0 1")
+    + joint("y2j", "y", "y2", "0 0 0", "0 0 1", mimic=("x1", 1.0, 0.0))
     + "</robot>"
 )
 
@@ -215,7 +173,7 @@ CROSSED = (
         "crossed",
     ],  # fmt: skip
 )
-def test_mimic_pinocchio_cannot_build_is_a_422_naming_the_joint(client, urdf, words) -> None:
+def test_mimic_pinocchio_cannot_build_is_a_422_naming_thejoint(client, urdf, words) -> None:
     body = problem(client.post("/robots/urdf", json={"name": "bad", "urdf": urdf}), 422, "urdf")
     assert all(w in body["detail"] for w in words), body["detail"]
     assert "from file" not in body["detail"].lower() and "/" not in body["detail"]

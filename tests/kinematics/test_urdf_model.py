@@ -8,7 +8,7 @@ import pytest
 
 from app.catalog import load_catalog
 from app.kinematics.urdf_model import build_model
-from tests.api.test_mimic_order import gripper
+from tests.mimic_robots import gripper
 
 
 @pytest.mark.parametrize("robot_id", ["panda", "ur5"])
