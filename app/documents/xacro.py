@@ -204,5 +204,5 @@ def _expand(
     try:
         parse_literal_xml(urdf, "description", limits)
     except InvalidInputError as exc:
-        raise InvalidInputError(f"the expanded URDF: {exc.message}", "description") from None
+        raise InvalidInputError(f"the expanded document: {exc.message}", "description") from None
     return urdf
