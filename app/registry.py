@@ -405,6 +405,7 @@ class Registry:
         xacro_args: Mapping[str, str] | None = None,
         ee_frame: str | None = None,
         description: str = "",
+        srdf_xacro_args: Mapping[str, str] | None = None,
     ) -> RobotModel:
         """Add a robot from a description package (zip or tar.gz archive with its meshes).
 
@@ -432,6 +433,7 @@ class Registry:
                 xacro_args=xacro_args or {},
                 catalog=erd_share_dir(),
                 limits=self.limits,
+                srdf_xacro_args=srdf_xacro_args,
             )
             check_documents(package.urdf, package.srdf, self.limits.urdf, "description")
             robot = build_checked_model(

@@ -47,7 +47,15 @@ CONTENT_TYPES = {
 }
 #: The longest file name (one path segment) a file system stores, in bytes (Linux NAME_MAX).
 MAX_NAME_BYTES = 255
-_TEXT_FIELDS = ("name", "description", "srdf", "xacro_args", "ee_frame", "summary")
+_TEXT_FIELDS = (
+    "name",
+    "description",
+    "srdf",
+    "xacro_args",
+    "srdf_xacro_args",
+    "ee_frame",
+    "summary",
+)
 
 
 class PackageUpload(Schema):
@@ -71,12 +79,23 @@ class PackageUpload(Schema):
         description="Path inside the archive of the robot description: .urdf, .xacro or "
         "MJCF .xml (e.g. panda_description/urdf/panda.urdf).",
     )
-    srdf: Text | None = Field(None, max_length=1024, description="Path of an SRDF file.")
+    srdf: Text | None = Field(
+        None,
+        max_length=1024,
+        description="Path of an SRDF file; one ending .xacro (e.g. ur_moveit_config/srdf/"
+        "ur.srdf.xacro) is expanded like a .xacro description, with the same packages.",
+    )
     xacro_args: Text | None = Field(
         None,
         max_length=65536,
         description="JSON object of xacro arguments: names to strings, numbers or booleans "
-        '({"arm_id": "panda"}).',
+        '({"arm_id": "panda"}); also those of a .xacro SRDF unless srdf_xacro_args is given.',
+    )
+    srdf_xacro_args: Text | None = Field(
+        None,
+        max_length=65536,
+        description="JSON object of the arguments of a .xacro SRDF, when they differ from "
+        'xacro_args ({"name": "ur5e", "prefix": ""}); same rules as xacro_args.',
     )
     ee_frame: Text | None = Field(
         None,
@@ -91,16 +110,16 @@ class _PackageForm(PackageUpload):
     archive: bytes = b""  # the file part is read apart; the text fields are validated here
 
 
-def _xacro_args(text: str | None) -> dict[str, str]:
-    """The ``xacro_args`` form field: a JSON object of argument names to strings, numbers or
-    booleans (:func:`app.documents.xacro.check_xacro_args`)."""
+def _xacro_args(text: str | None, field: str = "xacro_args") -> dict[str, str]:
+    """The ``xacro_args`` (or ``srdf_xacro_args``) form field: a JSON object of argument
+    names to strings, numbers or booleans (:func:`app.documents.xacro.check_xacro_args`)."""
     if text is None:
         return {}
     try:
         args = orjson.loads(text)
     except orjson.JSONDecodeError as exc:
-        raise InvalidInputError(f"not a JSON object ({exc})", "xacro_args") from None
-    return check_xacro_args(args)
+        raise InvalidInputError(f"not a JSON object ({exc})", field) from None
+    return check_xacro_args(args, field)
 
 
 def _add_package(reg: Registry, form: _PackageForm, archive: Any) -> dict[str, Any]:
@@ -112,6 +131,11 @@ def _add_package(reg: Registry, form: _PackageForm, archive: Any) -> dict[str, A
         xacro_args=_xacro_args(form.xacro_args),
         ee_frame=form.ee_frame,
         description=form.summary,
+        srdf_xacro_args=(
+            None
+            if form.srdf_xacro_args is None
+            else _xacro_args(form.srdf_xacro_args, "srdf_xacro_args")
+        ),
     )
     return robot_detail(robot, reg.files_root(robot.id))
 
@@ -132,9 +156,10 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
     """Add a robot from a description package (zip or tar.gz with its meshes); id ``name``.
 
     Form fields: ``name``, ``archive`` (the file), ``description`` (path inside the archive
-    of a ``.urdf``, ``.xacro`` or MJCF ``.xml``), optional ``srdf`` (path), ``xacro_args``
-    (JSON object of strings, numbers or booleans), ``ee_frame`` and ``summary`` (short
-    description).
+    of a ``.urdf``, ``.xacro`` or MJCF ``.xml``), optional ``srdf`` (path; a ``.xacro`` one
+    is expanded like the description), ``xacro_args`` (JSON object of strings, numbers or
+    booleans), ``srdf_xacro_args`` (the same, for a ``.xacro`` SRDF whose arguments
+    differ), ``ee_frame`` and ``summary`` (short description).
 
     The archive is unpacked safely (422 naming ``archive`` and the member otherwise): no
     absolute names, ``..``, drive letters or backslashes, no links, devices or duplicate

@@ -33,6 +33,7 @@ from app.kinematics.meshes import (
     load_mesh,
     resolve_uri,
 )
+from app.kinematics.urdf_model import build_model
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 
@@ -109,14 +110,12 @@ def check_stored_meshes(
 
 def check_in_child(args: dict[str, Any]) -> dict[str, int]:
     """The sandbox task (see the module docstring); runs in the child only."""
-    import pinocchio as pin
-
     limits = MeshLimits(**args["limits"])
     field = args["field"]
     for uri, path in args["meshes"].items():  # every header first: no loader before
         check_header(Path(path), uri, limits, field, collision=False)
     try:
-        model = pin.buildModelFromXML(args["urdf"], mimic=True)
+        model = build_model(args["urdf"], field=field)
     except (ValueError, RuntimeError) as exc:  # pragma: no cover - checked before
         raise InvalidInputError(f"the URDF cannot be read ({type(exc).__name__})", field) from None
     gm = collision_geometry(model, args["urdf"], args["package_dirs"], limits, field, progress)

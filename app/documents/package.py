@@ -6,6 +6,9 @@ URDF (and SRDF) text the service stores:
 1. the description is read by its extension: ``.urdf`` as is, ``.xacro`` expanded
    (:func:`app.documents.xacro.expand_xacro`), MJCF ``.xml`` converted
    (:func:`app.documents.mjcf.mjcf_to_urdf`);
+   An SRDF ending ``.xacro`` (MoveIt configs such as ``ur_moveit_config`` ship only
+   ``srdf/ur.srdf.xacro``) is expanded by the same sandboxed xacro, with the same
+   packages, with ``srdf_xacro_args`` if given, else ``xacro_args``;
 2. every ``<mesh>`` and ``<texture>`` ``filename`` is resolved inside the package:
    a relative path or ``file://<relative path>`` against the description's directory,
    ``package://<pkg>/<path>`` against package ``<pkg>``, which is the ``<name>`` of a
@@ -183,8 +186,11 @@ class _Resolver:
             where = current.relative_to(self.root).as_posix()
             try:
                 references = mesh_references(current)
-            except (MeshFileError, OSError) as exc:
+            except MeshFileError as exc:  # its message names no path
                 raise self._refuse("mesh", uri, f"{where} cannot be read ({exc})") from None
+            except OSError as exc:  # str(exc) would show where the package is unpacked
+                why = exc.strerror or type(exc).__name__
+                raise self._refuse("mesh", uri, f"{where} cannot be read ({why})") from None
             for ref in references:
                 rel = self._confine_reference(uri, where, ref.what, ref.name, folder)
                 target = self.root / rel
@@ -247,6 +253,7 @@ def read_package(
     xacro_args: Mapping[str, str],
     catalog: Path,
     limits: UploadLimits = UploadLimits(),
+    srdf_xacro_args: Mapping[str, str] | None = None,
 ) -> Package:
     """The URDF (references rewritten, see the module docstring) and SRDF of a package.
 
@@ -257,7 +264,11 @@ def read_package(
     description, srdf
         Paths inside the archive (request fields ``description`` and ``srdf``).
     xacro_args
-        Arguments of a ``.xacro`` description.
+        Arguments of a ``.xacro`` description, and of a ``.xacro`` SRDF unless
+        ``srdf_xacro_args`` are given.
+    srdf_xacro_args
+        Arguments of a ``.xacro`` SRDF (refusals name ``srdf_xacro_args``), when they
+        differ from the description's.
     catalog
         The example-robot-data ``share`` directory (for ``package://example-robot-data``).
     limits
@@ -307,7 +318,20 @@ def read_package(
     resolver.virtual_root = virtual_root
     package = rewrite_references(urdf, resolver, limits.urdf.xml, mesh_limits)
     if srdf is not None:
-        package.srdf = read_member(root, srdf, "srdf", "srdf")[1]
+        srdf_rel, package.srdf = read_member(root, srdf, "srdf", "srdf")
+        if srdf.lower().endswith(".xacro"):  # e.g. ur_moveit_config's srdf/ur.srdf.xacro
+            package.srdf = expand_xacro(
+                root,
+                srdf_rel,
+                xacro_args if srdf_xacro_args is None else srdf_xacro_args,
+                limits.urdf.xml,
+                packages=packages,
+                timeout_s=xacro_limits.timeout_s,
+                memory_bytes=xacro_limits.memory_bytes,
+                max_output_chars=xacro_limits.max_output_chars,
+                field="srdf",
+                args_field="xacro_args" if srdf_xacro_args is None else "srdf_xacro_args",
+            )
     return package
 
 

@@ -1,5 +1,9 @@
 """Checks of a client-supplied SRDF: collision pairs, groups, end effectors, named states.
 
+An SRDF that still holds xacro (``xacro:`` elements, ``${…}``, ``$(…)``) is refused naming
+the element: it must be given as ``.xacro`` to be expanded
+(:func:`app.documents.package.read_package`).
+
 Parsed like the URDF by :func:`app.kinematics.xmldoc.parse_literal_xml` (no DTD or
 entities, bounded work, literal names, as Boost.PropertyTree reads it for Pinocchio).
 Groups, end effectors and group states are resolved against the URDF's joints
@@ -10,10 +14,32 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import Any
+from xml.etree.ElementTree import Element
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.semantics import resolve, semantics_of
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
+
+
+def _refuse_xacro(root: Element, field: str) -> None:
+    """Refuse an SRDF that still holds xacro (an element of the xacro namespace, ``${…}``
+    or ``$(…)``): MoveIt's parser would read it as an SRDF without those groups."""
+    prefixes = {"xacro"} | {
+        name.split(":", 1)[1]
+        for element in root.iter()
+        for name, value in element.attrib.items()
+        if name.startswith("xmlns:") and "xacro" in value
+    }
+    hint = "it is xacro: give it as a file ending .xacro (e.g. robot.srdf.xacro) to expand it"
+    for element in root.iter():
+        if element.tag.split(":", 1)[0] in prefixes and ":" in element.tag:
+            raise InvalidInputError(f"<{element.tag[:60]}> {hint}", field)
+        texts = [(f"{name}=", value) for name, value in element.attrib.items()]
+        texts.append(("holds ", element.text or ""))
+        for what, value in texts:
+            if "${" in value or "$(" in value:
+                shown = f"<{element.tag[:60]}> {what}{value[:80]!r}"
+                raise InvalidInputError(f"{shown}: {hint}", field)
 
 
 def check_srdf_document(
@@ -29,6 +55,7 @@ def check_srdf_document(
     root = parse_literal_xml(text, field, limits)
     if root.tag != "robot":
         raise InvalidInputError(f"the root element must be <robot>, got <{root.tag}>", field)
+    _refuse_xacro(root, field)
     for pair in root.iter("disable_collisions"):
         for attr in ("link1", "link2"):
             link = pair.get(attr)

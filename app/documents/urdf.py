@@ -16,6 +16,7 @@ from xml.etree.ElementTree import Element
 from app.documents.srdf import check_srdf_document
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.models import MAX_JOINT_VALUE, RobotModel, urdf_joint_table
+from app.kinematics.urdf_model import mimic_specs
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 
 #: Joint types a URDF upload may use (the wire has one value per actuated joint).
@@ -174,6 +175,9 @@ def _check_joint(joint: Element, name: str, jtype: str, field: str) -> None:
         limit = joint.find("limit")
         if limit is None:
             raise InvalidInputError(f"joint {name!r}: a {jtype} joint needs <limit>", field)
+        for attr in ("effort", "velocity"):  # urdfdom refuses a limit without them
+            if limit.get(attr) is None:
+                raise InvalidInputError(f"joint {name!r}: <limit> needs {attr}=", field)
         lower = float(limit.get("lower", 0.0))
         upper = float(limit.get("upper", 0.0))
         if lower > upper:
@@ -273,6 +277,7 @@ def check_urdf_document(
         _check_joint(joint, name, jtype, field)
         if jtype != "fixed" and joint.find("mimic") is None:
             actuated += 1
+    mimic_specs(root, field)  # leaders known, no cycle, types Pinocchio can mimic
 
     roots = sorted(links - set(parent_of))
     if len(roots) != 1:
@@ -338,8 +343,12 @@ def build_checked_model(
         )
     except UnknownNameError as exc:
         raise InvalidInputError(exc.message, "ee_frame") from None
+    except InvalidInputError as exc:  # a mimic joint the builder refuses, named
+        raise InvalidInputError(exc.message, urdf_field) from None
     except (ValueError, RuntimeError, IndexError, KeyError, TypeError) as exc:
-        raise InvalidInputError(f"Pinocchio rejected the URDF ({exc})", urdf_field) from None
+        # Pinocchio's messages start with the C++ source file and function: keep the reason.
+        why = " ".join(str(exc).split("message:")[-1].split()) or type(exc).__name__
+        raise InvalidInputError(f"Pinocchio rejected the URDF ({why})", urdf_field) from None
     if robot.n == 0:
         raise InvalidInputError(
             "the URDF has no actuated joint (revolute, continuous or prismatic)", urdf_field

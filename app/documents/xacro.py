@@ -49,8 +49,8 @@ MAX_ARG_CHARS = 4096
 _ARG_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_.\-]{0,127}$")
 
 
-def _arg_value(name: str, value: object) -> str:
-    field = f"xacro_args.{name}"
+def _arg_value(name: str, value: object, args_field: str = "xacro_args") -> str:
+    field = f"{args_field}.{name}"
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, int):
@@ -72,22 +72,34 @@ def _arg_value(name: str, value: object) -> str:
     return text
 
 
-def check_xacro_args(args: object) -> dict[str, str]:
-    """The ``xacro_args`` as strings, or :class:`InvalidInputError` naming the bad one."""
+def check_xacro_args(args: object, field: str = "xacro_args") -> dict[str, str]:
+    """The xacro arguments ``args`` as strings, or :class:`InvalidInputError` naming the bad
+    one (``field`` or ``<field>.<name>``: ``xacro_args``, or ``srdf_xacro_args``)."""
     if not isinstance(args, Mapping):
-        raise InvalidInputError("must be an object of argument names to values", "xacro_args")
+        raise InvalidInputError("must be an object of argument names to values", field)
     if len(args) > MAX_ARGS:
-        raise InvalidInputError(f"more than {MAX_ARGS} arguments", "xacro_args")
+        raise InvalidInputError(f"more than {MAX_ARGS} arguments", field)
     out = {}
     for name, value in args.items():
         if not isinstance(name, str) or not _ARG_NAME.match(name):
             raise InvalidInputError(
                 f"argument name {str(name)[:60]!r} is not a xacro name "
                 "(letters, digits, '_', '.', '-'; at most 128 characters)",
-                "xacro_args",
+                field,
             )
-        out[name] = _arg_value(name, value)
+        out[name] = _arg_value(name, value, field)
     return out
+
+
+def _renamed(exc: InvalidInputError, field: str, args_field: str) -> InvalidInputError:
+    """``exc`` naming ``field`` for ``description`` and ``args_field`` for ``xacro_args``
+    (an SRDF given as xacro: fields ``srdf`` and ``srdf_xacro_args``)."""
+    name = exc.field or "description"
+    if name == "description":
+        name = field
+    elif name.startswith("xacro_args"):
+        name = args_field + name[len("xacro_args") :]
+    return InvalidInputError(exc.message.replace("xacro_args", args_field), name)
 
 
 def _description_path(root: Path, description: str) -> Path:
@@ -114,8 +126,11 @@ def expand_xacro(
     timeout_s: float = XACRO_TIMEOUT_S,
     memory_bytes: int = XACRO_MEMORY_BYTES,
     max_output_chars: int = XACRO_MAX_OUTPUT_CHARS,
+    field: str = "description",
+    args_field: str = "xacro_args",
 ) -> str:
-    """The URDF text of the xacro file ``root / description`` expanded with ``args``.
+    """The URDF (or SRDF) text of the xacro file ``root / description`` expanded with
+    ``args``.
 
     Parameters
     ----------
@@ -135,14 +150,35 @@ def expand_xacro(
     timeout_s, memory_bytes, max_output_chars
         Bounds of the child process: wall-clock time, address space it may add, length
         of the expanded document.
+    field, args_field
+        The request fields refusals name for the document and for its arguments.
 
     Raises
     ------
     InvalidInputError
-        Field ``description`` (message naming the file, relative to ``root``, and the
-        line), or ``xacro_args`` / ``xacro_args.<name>`` for the arguments (``archive``
-        for an unreadable ``package.xml`` when ``packages`` is not given).
+        Field ``field`` (message naming the file, relative to ``root``, and the line), or
+        ``args_field`` / ``<args_field>.<name>`` for the arguments (``archive`` for an
+        unreadable ``package.xml`` when ``packages`` is not given).
     """
+    try:
+        return _expand(
+            root, description, args, limits, packages, timeout_s, memory_bytes, max_output_chars
+        )
+    except InvalidInputError as exc:
+        raise _renamed(exc, field, args_field) from None
+
+
+def _expand(
+    root: Path,
+    description: str,
+    args: Mapping[str, str],
+    limits: XmlLimits,
+    packages: Mapping[str, str] | None,
+    timeout_s: float,
+    memory_bytes: int,
+    max_output_chars: int,
+) -> str:
+    """:func:`expand_xacro`, its refusals naming ``description`` and ``xacro_args``."""
     checked_args = check_xacro_args(args)
     path = _description_path(root, description)
     if packages is None:
@@ -168,5 +204,5 @@ def expand_xacro(
     try:
         parse_literal_xml(urdf, "description", limits)
     except InvalidInputError as exc:
-        raise InvalidInputError(f"the expanded URDF: {exc.message}", "description") from None
+        raise InvalidInputError(f"the expanded document: {exc.message}", "description") from None
     return urdf

@@ -395,7 +395,7 @@ def run(args: dict[str, Any]) -> str:
         raise InvalidInputError(message, field) from None
     if len(urdf) > args["max_output_chars"]:
         raise InvalidInputError(
-            f"the expanded URDF has more than {args['max_output_chars']} characters "
+            f"the expanded document has more than {args['max_output_chars']} characters "
             "(DENAVIT_XACRO_MAX_OUTPUT_CHARS)",
             "description",
         )

@@ -1,7 +1,8 @@
 """Mimic joints: URDF joints that follow another joint (``<mimic joint= multiplier= offset=>``).
 
-Pinocchio (built with ``mimic=True``) stores a follower as a ``JointModelMimic`` with no
-configuration or velocity of its own (nq = nv = 0): its value is
+In the model :func:`app.kinematics.urdf_model.build_model` builds, a follower is a
+``JointModelMimic`` of its root leader (a chain composed) with no configuration or velocity
+of its own (nq = nv = 0): its value is
 
     q_follower = multiplier · q_leader + offset
 
@@ -70,7 +71,7 @@ def mimic_joints(
     Parameters
     ----------
     model
-        A model built with ``mimic=True``.
+        A model built by :func:`app.kinematics.urdf_model.build_model`.
     wire_index
         Pinocchio joint id → wire index, for the actuated joints (the leaders among them).
     urdf_types

@@ -31,6 +31,7 @@ from app.kinematics.meshes import MeshLimits
 from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
 from app.kinematics.semantics import parse_semantics
 from app.kinematics.tip import bare_links, default_tip
+from app.kinematics.urdf_model import build_model
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
@@ -229,13 +230,13 @@ class RobotModel:
         self.urdf_text = urdf_text
         self.srdf_text = srdf_text
         self.package_dirs = list(package_dirs)
-        self.model: pin.Model = pin.buildModelFromXML(urdf_text, mimic=True)
+        root = parse_literal_xml(urdf_text, "urdf", TRUSTED)  # the one parse of the URDF here
+        self.model: pin.Model = build_model(urdf_text, root)  # mimic joints as ROS reads them
         self._local = threading.local()
         self._lock = threading.Lock()
         self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
         self.mesh_limits = MeshLimits()  # bounds on its collision meshes (the registry's)
 
-        root = parse_literal_xml(urdf_text, "urdf", TRUSTED)  # the one parse of the URDF here
         urdf_joints = urdf_joint_table(root)
         #: The URDF's joints (fixed and mimic included), name → description.
         self.urdf_joints = urdf_joints
@@ -278,8 +279,7 @@ class RobotModel:
                 )
             )
         self.joint_names = [j.name for j in self.joints]
-        self._joint_index = {j.name: j.index for j in self.joints}
-        self.n = len(self.joints)
+        self._joint_index, self.n = {j.name: j.index for j in self.joints}, len(self.joints)
         #: Mimic followers (not configuration entries; :mod:`app.kinematics.mimic`).
         self.mimic_joints: list[MimicJoint] = mimic_joints(
             self.model,

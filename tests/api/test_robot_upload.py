@@ -259,3 +259,13 @@ def test_upload_needs_the_token(tmp_path: Path) -> None:
             headers={"authorization": "Bearer tok"},
         )
         assert ok.status_code == 201
+
+
+@pytest.mark.parametrize("missing", ["effort", "velocity"])
+def test_limit_without_effort_or_velocity_names_the_joint(client: TestClient, missing: str):
+    """urdfdom refuses such a limit (Pinocchio then says only "not a valid URDF model")."""
+    lim = 'lower="-2" upper="2" effort="10" velocity="2"'.replace(f'{missing}="', 'x="')
+    urdf = robot(joint("j1", "base", "l1"), joint("j2", "l1", "l2").replace(
+        '<limit lower="-2" upper="2" effort="10" velocity="2"/>', f"<limit {lim}/>"))  # fmt: skip
+    detail = problem(client.post("/robots/urdf", json={"name": "bad", "urdf": urdf}), 422, "urdf")
+    assert "'j2'" in detail["detail"] and f"{missing}=" in detail["detail"], detail
