@@ -110,8 +110,13 @@ class _Resolver:
         return InvalidInputError(f"<{tag} filename={uri[:200]!r}>: {reason}", self.field)
 
     def _virtual(self, path: str) -> str | None:
-        """``path`` relative to the package when it is under :attr:`virtual_root`."""
+        """``path`` relative to the package when it is under :attr:`virtual_root`.
+
+        Repeated leading slashes are one, as the file system reads them: xacro that writes
+        ``file:///$(find pkg)/…`` (UFactory's xarm_description) gives ``file:////package/…``.
+        """
         root = self.virtual_root
+        path = "/" + path.lstrip("/")
         if root is not None and (path == root or path.startswith(root + "/")):
             return path[len(root) + 1 :]
         return None

@@ -42,8 +42,16 @@ def _post(client: TestClient, files: dict[str, bytes], description: str, **field
         ("panda_ws/", "lab_panda", "$(find lab_panda)/"),
         ("my_arm/", "my_arm", "file://$(find my_arm)/"),  # by top folder (no package.xml)
         ("my_arm/", "my_arm", "$(find my_arm)/"),
+        # xArm's xacro writes file:///$(find xarm_description)/...: four slashes once expanded
+        ("my_arm/", "my_arm", "file:///$(find my_arm)/"),
     ],
-    ids=["file-find-by-manifest", "find-by-manifest", "file-find-by-folder", "find-by-folder"],
+    ids=[
+        "file-find-by-manifest",
+        "find-by-manifest",
+        "file-find-by-folder",
+        "find-by-folder",
+        "file-slash-find",
+    ],
 )
 def test_find_mesh_paths_resolve_inside_the_package(
     client: TestClient, top: str, package: str, prefix: str
@@ -87,6 +95,7 @@ def _files(description: bytes, **more: bytes) -> dict[str, bytes]:
 #: upload path has, each with the unpacked package somewhere under the data directory.
 REFUSALS = {
     "file-outside": (_files(_tiny("file:///etc/passwd")), None, "absolute file://"),
+    "file-outside-slashes": (_files(_tiny("file:////etc/passwd")), None, "absolute file://"),
     "find-escapes": (_files(_tiny("file://$(find tiny)/../../x.stl")), None, "leaves the package"),
     "find-missing": (_files(_tiny("file://$(find tiny)/meshes/no.stl")), None, "not a file"),
     "find-folder": (_files(_tiny("file://$(find tiny)/meshes")), None, "not a file"),
