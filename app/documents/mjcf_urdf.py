@@ -135,6 +135,18 @@ class _Writer:
     def name(self, kind: mujoco.mjtObj, i: int) -> str:
         return mujoco.mj_id2name(self.m, kind, i) or ""
 
+    def _between(self, e: int) -> str:
+        """What equality ``e`` ties (its bodies, sites or tendons by name), for a refusal."""
+        m = self.m
+        tendon = int(m.eq_type[e]) == 3  # a tendon equality has no object type
+        kind = mujoco.mjtObj.mjOBJ_TENDON if tendon else mujoco.mjtObj(int(m.eq_objtype[e]))
+        noun = kind.name.removeprefix("mjOBJ_").lower()
+        ids = [int(i) for i in (m.eq_obj1id[e], m.eq_obj2id[e]) if int(i) >= 0]
+        names = " and ".join(repr(self.name(kind, i) or f"#{i}") for i in ids)
+        if len(ids) > 1:
+            noun = "bodies" if noun == "body" else noun + "s"
+        return f" ({noun} {names})" if names else ""
+
     def _mimics(self) -> dict[int, tuple[int, float, float]]:
         """Follower joint id → (leader joint id, multiplier, offset), from active joint
         equalities; every other active equality refused (module doc)."""
@@ -152,7 +164,8 @@ class _Writer:
                     "tendon": "a tendon coupling joints is not a mimic joint",
                 }.get(kind, "it is not a joint coupling")
                 raise InvalidInputError(
-                    f"{shown} is not supported: {why}; the service models kinematic trees "
+                    f"{shown}{self._between(e)} is not supported: {why}; the service models "
+                    "kinematic trees "
                     "of hinge and slide joints (mimic joints from <equality><joint>)",
                     FIELD,
                 )

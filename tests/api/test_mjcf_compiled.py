@@ -274,18 +274,19 @@ def test_gripper_arm_tips_at_its_tcp_site_with_colours(client: TestClient) -> No
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<tendon tendon1="split"/>',
-            "<tendon> is not supported: a tendon coupling joints",
+            "<tendon> (tendon 'split') is not supported: a tendon coupling joints",
         ),
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<connect name="loop" body1="left_finger" body2="right_finger" anchor="0 0 0"/>',
-            "<connect name='loop'> is not supported: it closes a kinematic loop",
+            "<connect name='loop'> (bodies 'left_finger' and 'right_finger') is not supported: "
+            "it closes a kinematic loop",
         ),
         ('<site name="tcp"', '<site name="upper"', "<site name='upper'>: its name is already"),
         (
             '<joint joint1="right" joint2="left" polycoef="0.001 1 0 0 0"/>',
             '<weld body1="left_finger" body2="right_finger"/>',
-            "<weld> is not supported: it welds",
+            "<weld> (bodies 'left_finger' and 'right_finger') is not supported: it welds",
         ),
     ],
 )

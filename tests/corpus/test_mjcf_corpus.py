@@ -356,10 +356,10 @@ def test_default_tip_is_the_tcp_site(corpus_client, uploaded, up: Upload) -> Non
 @pytest.mark.parametrize(
     ("description", "named"),
     [
-        # The coupling elements of 2f85.xml: the tendon "split", the <equality> connects.
-        ("robotiq_2f85/2f85.xml", ("tendon", "equality", "connect")),
+        # The first loop-closing <equality><connect> of 2f85.xml, by the bodies it ties.
+        ("robotiq_2f85/2f85.xml", ("<equality><connect> (bodies 'right_follower' and",)),
         # scene.xml adds a hanging box on a free joint: refusing that by name is right too.
-        ("robotiq_2f85/scene.xml", ("tendon", "equality", "connect", "free")),
+        ("robotiq_2f85/scene.xml", ("<equality><connect> (bodies", "of type 'free'")),
     ],
 )
 def test_2f85_linkage_is_refused_by_name(
