@@ -29,6 +29,8 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from tests.corpus.pair_rules import bridged_adjacent
+
 #: Joint types a kinematic arm may have (hinge: radians, slide: metres).
 _MOVING = {int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)}
 #: MuJoCo's default geom rgba; a geom rgba other than this overrides its material's.
@@ -178,23 +180,9 @@ class Reference:
         movers = {name: mover(m.body(name).id) for name in geoms}
         with_geometry = set(movers.values())
         nodes = {0} | {b for b in range(1, m.nbody) if m.body_jntnum[b]}
-        neighbours: dict[int, set[int]] = {n: set() for n in nodes}
-        for n in nodes - {0}:
-            p = joint_parent(n)
-            neighbours[n].add(p)
-            neighbours[p].add(n)
-        adjacent: set[frozenset[int]] = set()
-        for start in with_geometry:
-            seen, stack = {start}, list(neighbours[start])
-            while stack:
-                n = stack.pop()
-                if n in seen:
-                    continue
-                seen.add(n)
-                if n in with_geometry:
-                    adjacent.add(frozenset((start, n)))
-                else:
-                    stack.extend(neighbours[n])
+        adjacent = bridged_adjacent(
+            {n: joint_parent(n) if n else None for n in nodes}, with_geometry
+        )
         names = sorted(geoms)
         pairs: set[frozenset[str]] = set()
         for i, a in enumerate(names):

@@ -32,6 +32,8 @@ import trimesh
 import yourdfpy
 from lxml import etree
 
+from tests.corpus.pair_rules import bridged_adjacent
+
 #: ``ament_index_python.packages.get_package_share_directory``, as ament_index_python
 #: implements it (the package is part of ROS 2, not of PyPI).
 AMENT_INDEX_SHIM = """
@@ -294,23 +296,7 @@ class Reference:
         body, up = self._bodies()
         geom_links = sorted(self._geoms)
         geom_bodies = {body[link] for link in geom_links}
-        nbrs: dict[str, set[str]] = {b: set() for b in up}
-        for b, p in up.items():
-            if p is not None:
-                nbrs[b].add(p)
-                nbrs[p].add(b)
-        adjacent: set[frozenset[str]] = set()
-        for start in geom_bodies:
-            seen, stack = {start}, list(nbrs[start])
-            while stack:
-                b = stack.pop()
-                if b in seen:
-                    continue
-                seen.add(b)
-                if b in geom_bodies:
-                    adjacent.add(frozenset((start, b)))
-                else:
-                    stack.extend(nbrs[b])
+        adjacent = bridged_adjacent(up, geom_bodies)
         off = srdf_disabled(self.srdf_text, geom_links)
         out: set[frozenset[str]] = set()
         for i, a in enumerate(geom_links):
