@@ -28,6 +28,7 @@ import coal
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics.collada import UnsupportedCollada, read_collada
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.mesh_files import MESH_FORMATS, MeshFileError, MeshTooLarge, mesh_counts
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
@@ -72,7 +73,11 @@ def check_header(path: Path, uri: str, limits: MeshLimits, field: str, collision
 
 
 def load_mesh(path: Path, scale: np.ndarray, uri: str, field: str) -> coal.BVHModelOBBRSS:
-    """coal's BVH of one mesh file (the header already checked); refusals name ``uri``."""
+    """coal's BVH of one mesh file (the header already checked); refusals name ``uri``.
+
+    A COLLADA file in which a node holds several meshes (a multi-material file) has its
+    triangles read from the file itself (:func:`app.kinematics.collada.read_collada`:
+    coal 3.0.3 joins the wrong vertices there); every other file is coal's reading."""
     suffix = path.suffix.lower()
     if suffix not in MESH_FORMATS:
         raise InvalidInputError(
@@ -80,6 +85,18 @@ def load_mesh(path: Path, scale: np.ndarray, uri: str, field: str) -> coal.BVHMo
             f"(use {', '.join(sorted(MESH_FORMATS))})",
             field,
         )
+    if suffix == ".dae":
+        try:  # coal misreads a COLLADA node of several meshes (app.kinematics.collada)
+            dae = read_collada(path)
+        except UnsupportedCollada:
+            dae = None  # coal's own reading, below (its loader refuses what is not COLLADA)
+        if dae is not None and dae.shared_nodes:
+            bvh = coal.BVHModelOBBRSS()
+            bvh.beginModel(len(dae.triangles), len(dae.vertices))
+            bvh.addVertices(dae.vertices * np.asarray(scale, dtype=float))
+            bvh.addTriangles(dae.triangles.astype(np.int64))
+            bvh.endModel()
+            return bvh
     try:
         bvh = coal.MeshLoader().load(str(path), np.asarray(scale, dtype=float))
     except (ValueError, RuntimeError, OSError) as exc:
