@@ -43,6 +43,7 @@ import math
 import os
 from pathlib import Path
 from typing import Any
+from xml.sax.saxutils import escape
 
 import mujoco
 import numpy as np
@@ -78,9 +79,8 @@ def _num(x: float) -> str:
 
 
 def _xml(text: str) -> str:
-    return (
-        text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
-    )
+    """``text`` for an XML attribute value in double quotes."""
+    return escape(text, {'"': "&quot;"})
 
 
 def _pose(pos: Any, quat: Any) -> np.ndarray:

@@ -297,17 +297,22 @@ def read_package(
         check_header(path, uri, mesh_limits, "archive", collision=False)
         resolver.check_named_files(uri, resolver.root / uri)
 
-    if lowered.endswith(".xacro"):
-        urdf = expand_xacro(
+    def expand(path: str, args: Mapping[str, str], **fields: str) -> str:
+        """``path`` expanded by the sandboxed xacro, with the package's ``$(find)``."""
+        return expand_xacro(
             root,
-            rel,
-            xacro_args,
+            path,
+            args,
             limits.urdf.xml,
             packages=packages,
             timeout_s=xacro_limits.timeout_s,
             memory_bytes=xacro_limits.memory_bytes,
             max_output_chars=xacro_limits.max_output_chars,
+            **fields,
         )
+
+    if lowered.endswith(".xacro"):
+        urdf = expand(rel, xacro_args)
         virtual_root = VIRTUAL_ROOT
     elif lowered.endswith(".xml"):
         urdf = mjcf_to_urdf(
@@ -325,15 +330,9 @@ def read_package(
     if srdf is not None:
         srdf_rel, package.srdf = read_member(root, srdf, "srdf", "srdf")
         if srdf.lower().endswith(".xacro"):  # e.g. ur_moveit_config's srdf/ur.srdf.xacro
-            package.srdf = expand_xacro(
-                root,
+            package.srdf = expand(
                 srdf_rel,
                 xacro_args if srdf_xacro_args is None else srdf_xacro_args,
-                limits.urdf.xml,
-                packages=packages,
-                timeout_s=xacro_limits.timeout_s,
-                memory_bytes=xacro_limits.memory_bytes,
-                max_output_chars=xacro_limits.max_output_chars,
                 field="srdf",
                 args_field="xacro_args" if srdf_xacro_args is None else "srdf_xacro_args",
             )

@@ -37,6 +37,11 @@ import numpy as np
 
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
+#: A node's transform elements (``lookat`` and ``skew`` are not read).
+_TRANSFORMS = ("matrix", "translate", "rotate", "scale", "lookat", "skew")
+#: The primitive lists that give triangles (``lines`` and ``linestrips`` give none).
+_PRIMITIVES = ("triangles", "polylist", "polygons", "trifans", "tristrips")
+
 
 class UnsupportedCollada(ValueError):
     """The file uses what :func:`read_collada` does not read (module doc)."""
@@ -99,10 +104,6 @@ def _node_transform(node: Element) -> np.ndarray:
         elif tag in ("lookat", "skew"):
             raise UnsupportedCollada(f"<{tag}> in a node")
     return T
-
-
-_TRANSFORMS = ("matrix", "translate", "rotate", "scale", "lookat", "skew")
-_PRIMITIVES = ("triangles", "polylist", "polygons", "trifans", "tristrips")
 
 
 class _Document:

@@ -34,6 +34,7 @@ from __future__ import annotations
 import heapq
 import math
 from collections.abc import Mapping
+from copy import deepcopy
 from dataclasses import dataclass
 from xml.etree.ElementTree import Element, SubElement, tostring
 
@@ -270,7 +271,7 @@ def _build_copy(root: Element, order: list[str] | None, continuous: set[str]) ->
     given: it visits siblings by name, so each joint is built under a temporary name that
     sorts by its rank, then given its own) and whose ``continuous`` followers are unbounded
     revolute joints (the same motion; a follower has no configuration of its own)."""
-    copy = parse_literal_xml(tostring(root, encoding="unicode"), "urdf", TRUSTED)
+    copy = deepcopy(root)
     order = order or []
     width = len(str(len(order)))
     temporary = {name: f"{_ORDER_PREFIX}{rank:0{width}d}" for rank, name in enumerate(order)}
