@@ -13,7 +13,7 @@ Server options and why (measured in docs/benchmarks.md, "Forward kinematics over
 uvloop event loop and httptools parser (the fastest uvicorn pair; its protocol subclassed in
 :mod:`app.server.http_protocol` to bound request heads, which httptools buffers without limit: 431
 beyond 64 KiB or 256 fields), uvicorn's access log off
-(:mod:`app.observability` writes one JSON line per request instead, and every log line is
+(:mod:`app.middleware.observability` writes one JSON line per request instead, and every log line is
 JSON), ``timeout_graceful_shutdown`` so SIGTERM lets in-flight requests finish, and a
 listen backlog of 2048 for bursts.
 
@@ -38,8 +38,8 @@ from typing import Any
 
 import orjson
 
-from app.logs import logging_config
-from app.settings import Settings, get_settings
+from app.operations.logs import logging_config
+from app.operations.settings import Settings, get_settings
 
 USAGE = "usage: python -m app [healthcheck | openapi PATH | warm-up [--require-cache]]"
 
@@ -107,7 +107,7 @@ def openapi_text() -> str:
 
 def write_openapi(path: Path) -> None:
     """Write :func:`openapi_text` to ``path`` (atomically)."""
-    from app.store import atomic_write_bytes
+    from app.storage.store import atomic_write_bytes
 
     atomic_write_bytes(path, openapi_text().encode())
 

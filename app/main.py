@@ -1,17 +1,19 @@
 """The ASGI application: ``python -m app`` (or ``uvicorn app.main:app``).
 
 Importing this module reads the ``DENAVIT_*`` settings; a bad value exits with one line
-naming the variable (see :mod:`app.settings`).
+naming the variable (see :mod:`app.operations.settings`).
 
 Middleware, outermost first (all pure ASGI, see docs/deployment.md):
 
-1. :class:`~app.observability.ObservabilityMiddleware` — request id, metrics, access log,
+1. :class:`~app.middleware.observability.ObservabilityMiddleware` — request id, metrics, access log,
    ``X-Content-Type-Options: nosniff`` on every answer;
-2. :class:`~app.guard.ErrorGuardMiddleware` — 500 problem for a bug, 503 for a request cut
+2. :class:`~app.middleware.guard.ErrorGuardMiddleware` — 500 problem for a bug, 503 for a request
+cut
    off by the shutdown; the connection stays usable;
 3. CORS, only when ``DENAVIT_CORS_ORIGINS`` is set;
-4. :class:`~app.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``;
-5. :class:`~app.methods.MethodsMiddleware` — ``HEAD`` on ``GET`` routes, 405 with the exact
+4. :class:`~app.middleware.body_limit.BodyLimitMiddleware` — 413 past ``DENAVIT_MAX_BODY_BYTES``;
+5. :class:`~app.middleware.methods.MethodsMiddleware` — ``HEAD`` on ``GET`` routes, 405 with the
+exact
    ``Allow`` of the path.
 """
 
@@ -26,26 +28,27 @@ from dataclasses import replace
 from fastapi import FastAPI
 from starlette.middleware.cors import CORSMiddleware
 
-from app import api, openapi
-from app.api import docs_pages, errors, metrics, static_files, viewer
-from app.body_limit import BodyLimitMiddleware
-from app.documents.archive import ArchiveLimits
-from app.documents.limits import UploadLimits
-from app.documents.sandbox import PARSE_LIMITS
-from app.documents.urdf import UrdfLimits
-from app.documents.xacro import XacroLimits
-from app.guard import ErrorGuardMiddleware
-from app.kinematics import procwatch
+from app.api import errors, static_files
+from app.api.routes import ROUTERS, docs_pages, metrics, viewer
 from app.kinematics.ik.compiled import warm_up as warm_up_ik
-from app.kinematics.ik_batch import shutdown_pool as stop_ik_batch_workers
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.xmldoc import XmlLimits
-from app.logs import configure_logging
-from app.methods import MethodsMiddleware
-from app.observability import ObservabilityMiddleware
-from app.registry import Registry
-from app.settings import Settings, get_settings
-from app.store import remove_stale_temporaries
+from app.middleware import openapi
+from app.middleware.body_limit import BodyLimitMiddleware
+from app.middleware.guard import ErrorGuardMiddleware
+from app.middleware.methods import MethodsMiddleware
+from app.middleware.observability import ObservabilityMiddleware
+from app.operations.logs import configure_logging
+from app.operations.settings import Settings, get_settings
+from app.robots.documents.archive import ArchiveLimits
+from app.robots.documents.limits import UploadLimits
+from app.robots.documents.sandbox import PARSE_LIMITS
+from app.robots.documents.urdf import UrdfLimits
+from app.robots.documents.xacro import XacroLimits
+from app.robots.registry import Registry
+from app.storage.store import remove_stale_temporaries
+from app.workers import procwatch
+from app.workers.ik_batch import shutdown_pool as stop_ik_batch_workers
 
 DESCRIPTION = """\
 Kinematics of robot arms over HTTP: forward kinematics, Jacobians, inverse kinematics,
@@ -136,13 +139,14 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="0.1.0",
         description=DESCRIPTION,
         lifespan=lifespan,
-        docs_url=None,  # FastAPI's pages load from CDNs: app.api.docs_pages serves them offline
+        # FastAPI's pages load from CDNs: app.api.routes.docs_pages serves them offline
+        docs_url=None,
         redoc_url=None,
     )
     app.state.settings = settings
     app.state.registry = Registry(settings.data_dir, upload_limits(settings))
     errors.install(app)
-    for router in api.ROUTERS:
+    for router in ROUTERS:
         app.include_router(router)
     app.include_router(metrics.router)
     app.include_router(viewer.router)  # GET /viewer (not in the OpenAPI document)

@@ -22,9 +22,11 @@ import numpy as np
 import orjson
 import pinocchio as pin
 
-from app.kinematics.reachability.build import MapBuilder, build_map, default_processes
+from app.kinematics.reachability.build import MapBuilder
 from app.kinematics.reachability.spec import make_spec
-from app.registry import Registry
+from app.robots.registry import Registry
+from app.workers import default_processes
+from app.workers.map_build import build_map
 
 ROBOTS = ("panda", "ur5")
 
@@ -118,7 +120,7 @@ def bench_query() -> None:
     from fastapi.testclient import TestClient
 
     from app.main import create_app
-    from app.settings import Settings
+    from app.operations.settings import Settings
 
     with tempfile.TemporaryDirectory() as tmp:
         app = create_app(Settings(data_dir=Path(tmp)))

@@ -1,7 +1,7 @@
 """Batch IK across processes: targets per second with 1 and 2 worker processes.
 
 What ``POST /robots/{id}/ik/batch`` with ``chain_seeds: false`` runs
-(:class:`app.kinematics.ik_batch.BatchPool`): the same targets (TRAC-IK's protocol: uniform
+(:class:`app.workers.ik_batch.BatchPool`): the same targets (TRAC-IK's protocol: uniform
 within the limits, seed at mid-range, 5 ms per target) solved in the calling thread
 (1 process) and by a warm pool of 2 worker processes, alternating round by round so that
 load hits both alike; and, as the ceiling of the pool on this machine, the same two workers
@@ -25,10 +25,11 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from app.kinematics import ik_batch
+from app.kinematics.ik.batch import BatchTask
 from app.kinematics.ik.problem import IKOptions
-from app.kinematics.ik_batch import BatchPool, BatchTask, default_processes
-from app.registry import Registry
+from app.robots.registry import Registry
+from app.workers import default_processes, ik_batch
+from app.workers.ik_batch import BatchPool
 from bench.bench_ik import BUDGET_MS, targets
 
 #: The pool's own overhead apart: the same 2 workers given one chunk each (half the targets),

@@ -23,7 +23,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.collision import collision_model
-from app.registry import Registry
+from app.robots.registry import Registry
 from bench._http import serve
 
 READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]

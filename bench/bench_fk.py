@@ -32,10 +32,10 @@ import orjson
 import pinocchio as pin
 from fastapi import FastAPI
 
-from app.api.fk import FKRequest
 from app.api.responses import ORJSONResponse
-from app.api.schemas import RobotId
-from app.registry import Registry
+from app.api.routes.fk import FKRequest
+from app.api.schemas.common import RobotId
+from app.robots.registry import Registry
 from bench._http import ensure_wrk, load, serve
 
 READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02]
@@ -84,7 +84,7 @@ def _uvicorn(target: str, factory: bool = True, **overrides: str) -> str:
     return (
         "import uvicorn\n"
         "from app.__main__ import server_options\n"
-        "from app.settings import get_settings\n"
+        "from app.operations.settings import get_settings\n"
         f"opts = {{**server_options(get_settings()), **{overrides!r}}}\n"
         f"uvicorn.run({target!r}, factory={factory}, **opts)\n"
     )

@@ -39,7 +39,7 @@ from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion
-from app.registry import Registry
+from app.robots.registry import Registry
 from bench._http import serve
 from bench.rtb_side import IkLM
 

@@ -80,7 +80,7 @@ def live() -> dict[str, tuple[float, float, float]]:
 def in_process() -> dict[str, tuple[float, float, float]]:
     """Robot → (FK, IK, solve) in CPU ms per request, the ASGI app called directly."""
     from app.main import create_app
-    from app.settings import Settings
+    from app.operations.settings import Settings
 
     app = create_app(Settings(data_dir=Path(tempfile.mkdtemp(prefix="denavit-bench-"))))
 

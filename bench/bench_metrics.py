@@ -20,8 +20,8 @@ import time
 from pathlib import Path
 from typing import Any
 
-from app.metrics import Metrics
-from app.observability import ObservabilityMiddleware
+from app.middleware.observability import ObservabilityMiddleware
+from app.operations.metrics import Metrics
 
 ROUTES = [f"/robots/{{robot_id}}/route{i}" for i in range(20)]
 

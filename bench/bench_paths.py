@@ -35,7 +35,7 @@ from app.kinematics.ik.search import joint_distance
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.follow import PathOptions, follow
 from app.kinematics.paths.segments import CartesianPath, Line
-from app.registry import Registry
+from app.robots.registry import Registry
 from bench._lines import RandomLine, random_lines
 
 ROBOTS = (("ur5", "tool0"), ("panda", "panda_hand"))

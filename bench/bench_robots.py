@@ -24,7 +24,7 @@ import httpx
 import numpy as np
 
 from app.kinematics.fk import forward_kinematics
-from app.registry import Registry
+from app.robots.registry import Registry
 from dh2urdf import DHTable
 
 ROOT = Path(__file__).resolve().parents[1]

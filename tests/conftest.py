@@ -10,8 +10,8 @@ from fastapi.testclient import TestClient
 from hypothesis import settings as hypothesis_settings
 
 from app.main import create_app
-from app.registry import Registry
-from app.settings import Settings
+from app.operations.settings import Settings
+from app.robots.registry import Registry
 
 # Property tests draw the same examples on every run (a fixed seed per test) and keep no
 # example database: a run never depends on what an earlier run found.

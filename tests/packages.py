@@ -19,7 +19,7 @@ import numpy as np
 import yourdfpy
 from fastapi.testclient import TestClient
 
-from app.catalog import erd_share_dir
+from app.robots.catalog import erd_share_dir
 
 PANDA_DIR = erd_share_dir() / "example-robot-data" / "robots" / "panda_description"
 CATALOG_PREFIX = "package://example-robot-data/robots/panda_description/"

@@ -103,14 +103,19 @@ def test_the_import_reader_sees_what_these_rules_look_for(tmp_path: Path) -> Non
     path = tmp_path / "sample.py"
     path.write_text(
         "from typing import TYPE_CHECKING\n"
-        "import app.store\n"
+        "import app.storage.store\n"
         "from app.kinematics import models\n"
         "from ..settings import Settings\n"
         "if TYPE_CHECKING:\n"
-        "    from app.registry import Registry\n"
+        "    from app.robots.registry import Registry\n"
         "def f():\n"
         "    from tests.api.test_fk import helper\n"
     )
     found = imported(path, package="app.kinematics")
-    assert {"app.store", "app.kinematics.models", "app.settings", "app.registry"} <= found
+    assert {
+        "app.storage.store",
+        "app.kinematics.models",
+        "app.settings",
+        "app.robots.registry",
+    } <= found
     assert "tests.api.test_fk" in found

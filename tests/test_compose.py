@@ -12,7 +12,7 @@ from pathlib import Path
 
 import yaml
 
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.dockerfile import FINAL, exec_form
 
 ROOT = Path(__file__).resolve().parents[1]

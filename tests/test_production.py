@@ -23,8 +23,8 @@ from starlette.middleware.base import BaseHTTPMiddleware
 
 from app.api.offload import offload
 from app.main import create_app
-from app.metrics import METRICS, record_ik
-from app.settings import Settings
+from app.operations.metrics import METRICS, record_ik
+from app.operations.settings import Settings
 from tests.helpers import api_routes, parse_metrics, serve, write_routes
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -399,7 +399,7 @@ def test_record_ik_counts_outcomes(client) -> None:
 
 
 def test_metric_label_values_are_escaped() -> None:
-    from app.metrics import Metrics
+    from app.operations.metrics import Metrics
 
     m = Metrics()
     m.observe("GET", 'a"b\\c\nd', 200, 0.001)

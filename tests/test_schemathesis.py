@@ -52,8 +52,8 @@ from schemathesis.checks import (
 from schemathesis.config import SchemathesisConfig
 
 from app.main import create_app
-from app.openapi import BEARER, guarded_operations
-from app.settings import Settings
+from app.middleware.openapi import BEARER, guarded_operations
+from app.operations.settings import Settings
 
 EXCLUDED = ("build_reachability_map",)
 TOKEN = "fuzz-token-0123456789"

@@ -12,7 +12,7 @@ from pathlib import Path
 import httptools.parser.parser as httptools_parser
 import pytest
 
-from app.catalog import erd_share_dir
+from app.robots.catalog import erd_share_dir
 
 ROOT = Path(__file__).resolve().parents[1]
 CATALOG = ROOT / "robots" / "example_robot_data.yaml"

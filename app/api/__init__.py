@@ -1,39 +1,4 @@
-"""The HTTP layer: one router module per area, errors in :mod:`app.api.errors`."""
-
-from __future__ import annotations
-
-from app.api import (
-    analysis,
-    collisions,
-    fk,
-    health,
-    ik,
-    jacobian,
-    packages,
-    paths,
-    reachability,
-    robots,
-    scenes,
-    stream,
-    velocity,
-)
-
-#: Routers mounted by :func:`app.main.create_app`, in this order. A request is matched
-#: against the routes one by one (~4 µs a route on a loaded core, twice per request), so the
-#: hot single-query routes (FK, Jacobian, IK) come first; their paths end in a fixed segment
-#: no other route has, so the order changes no answer, only the OpenAPI document's order.
-ROUTERS = [
-    fk.router,
-    jacobian.router,
-    ik.router,
-    health.router,
-    packages.router,  # before robots: /robots/package is not the robot 'package'
-    robots.router,
-    analysis.router,
-    reachability.router,
-    collisions.router,
-    scenes.router,
-    paths.router,
-    velocity.router,
-    stream.router,  # a WebSocket: not in the OpenAPI document
-]
+"""The HTTP layer: routes (:mod:`app.api.routes`), wire models (:mod:`app.api.schemas`) and
+the plumbing they share beside them: typed dependencies (``deps``), errors as RFC 9457
+problem details (``errors``), body decoding (``body``), the compute pools (``offload``),
+responses, security, untrusted-file answers."""

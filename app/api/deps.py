@@ -14,9 +14,9 @@ from starlette.concurrency import run_in_threadpool
 from starlette.requests import HTTPConnection
 
 from app.kinematics.models import RobotModel
-from app.registry import Registry
-from app.scenes import SceneStore
-from app.settings import Settings
+from app.operations.settings import Settings
+from app.robots.registry import Registry
+from app.storage.scenes import SceneStore
 
 
 async def registry(request: Request) -> Registry:

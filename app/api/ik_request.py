@@ -13,13 +13,13 @@ import pinocchio as pin
 from starlette.requests import HTTPConnection
 
 from app.api.deps import scene_store
-from app.api.ik_schemas import IKTaskIn, Target
-from app.api.scenes import resolve_obstacles
+from app.api.routes.scenes import resolve_obstacles
+from app.api.schemas.ik import IKTaskIn, Target
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import default_frame, group
+from app.kinematics.ik.batch import Collisions, collision_accept
 from app.kinematics.ik.problem import IKOptions, frame_name, target_placement
 from app.kinematics.ik.ranking import clearance_function
-from app.kinematics.ik_batch import Collisions, collision_accept
 from app.kinematics.models import RobotModel
 
 

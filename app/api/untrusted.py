@@ -12,7 +12,7 @@ would read what the viewer keeps and call the API as the user. So these answers 
   saves it instead of showing it. ``fetch``, XHR and ``<img>`` ignore the disposition, so
   the viewer still loads meshes and textures;
 - ``X-Content-Type-Options: nosniff``, which every answer of the service carries
-  (:mod:`app.observability`): the browser keeps to the declared type.
+  (:mod:`app.middleware.observability`): the browser keeps to the declared type.
 
 Content types stay truthful (``application/xml`` is XML); the headers, not a disguised
 type, keep the browser from running what the file holds.

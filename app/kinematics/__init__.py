@@ -2,7 +2,7 @@
 
 Usable from Python without the web layer::
 
-    from app.registry import Registry
+    from app.robots.registry import Registry
     robot = Registry().get("panda")
     from app.kinematics.fk import forward_kinematics
     poses = forward_kinematics(robot, robot.neutral(), ["panda_hand_tcp"])

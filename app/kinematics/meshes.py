@@ -11,7 +11,7 @@ is one mesh's load, at most ``max_collision_mesh_triangles`` triangles (100 000 
 triangles: ~1 s on an idle 2-core machine, ~3 s with both cores busy; a real mesh is about
 2.5 times faster).
 
-Uploads are loaded first in a bounded child process (:mod:`app.documents.mesh_check`), so a
+Uploads are loaded first in a bounded child process (:mod:`app.robots.documents.mesh_check`), so a
 file that stalls or balloons the loader despite a valid header costs that child, not a
 worker.
 """

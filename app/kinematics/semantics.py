@@ -33,7 +33,7 @@ the first ``<end_effector>`` in document order (:meth:`Semantics.default_tip`).
 Everything here is pure: the URDF enters as the joint table of
 :func:`app.kinematics.models.urdf_joint_table` (name → type, parent, child, limits,
 mimic). :func:`resolve` raises :class:`InvalidInputError` naming the SRDF element for every
-inconsistency, so uploads are checked with it (:mod:`app.documents.srdf`) and models built
+inconsistency, so uploads are checked with it (:mod:`app.robots.documents.srdf`) and models built
 from checked documents resolve without error.
 """
 

@@ -20,7 +20,7 @@ from fastapi.testclient import TestClient
 
 from app.api.untrusted import content_disposition
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.helpers import problem
 from tests.packages import PANDA_DIR, zip_bytes
 

@@ -17,9 +17,9 @@ import pytest
 import yourdfpy
 from fastapi.testclient import TestClient
 
-from app.documents import package as package_module
-from app.documents.package import _Resolver
 from app.kinematics.errors import InvalidInputError
+from app.robots.documents import package as package_module
+from app.robots.documents.package import _Resolver
 from tests.helpers import ROOT, problem
 from tests.packages import PANDA_DIR, assert_fk_matches, panda_files, zip_bytes
 

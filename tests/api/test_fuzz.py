@@ -30,7 +30,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 
 #: Robots fuzzed: name → number of actuated joints.
 ROBOTS = {"ur5": 6, "planar2": 2, "fuzz_1dof": 1}

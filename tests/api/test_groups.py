@@ -14,9 +14,9 @@ import pytest
 import yourdfpy
 from fastapi.testclient import TestClient
 
-from app.catalog import load_catalog
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
+from app.robots.catalog import load_catalog
 from tests.helpers import problem
 
 ARM = [f"panda_joint{i}" for i in range(1, 8)]

@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.catalog import erd_share_dir
 from app.kinematics.errors import InvalidInputError
 from app.main import create_app
-from app.scenes import SceneStore
-from app.settings import Settings
+from app.operations.settings import Settings
+from app.robots.catalog import erd_share_dir
+from app.storage.scenes import SceneStore
 from tests.helpers import problem, serve
 
 SURROGATE = "\\ud800"  # the JSON escape of a lone UTF-16 surrogate

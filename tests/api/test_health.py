@@ -7,7 +7,7 @@ import shutil
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 
 
 def test_health_is_ok(client) -> None:

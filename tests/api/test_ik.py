@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from app.api import ik as ik_api
+from app.api.routes import ik as ik_api
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.rotations import matrix_to_quaternion
 from tests.helpers import fk_target, problem

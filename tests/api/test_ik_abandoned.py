@@ -22,8 +22,8 @@ from app.kinematics import ik
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik.problem import IKOptions
 from app.main import create_app
-from app.registry import Registry
-from app.settings import Settings
+from app.operations.settings import Settings
+from app.robots.registry import Registry
 from tests.helpers import send_and_hang_up, serve
 
 #: 20 unreachable targets, 1 s each: 20 s of solver time. 1.0 m from the shoulder: beyond

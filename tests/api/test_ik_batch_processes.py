@@ -19,14 +19,15 @@ import pinocchio as pin
 import pytest
 from fastapi.testclient import TestClient
 
-from app.kinematics import ik, ik_batch
+from app.kinematics import ik
 from app.kinematics.collision import collision_filter
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik.problem import IKOptions, target_placement
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import parse_obstacles
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
+from app.workers import ik_batch
 from tests.helpers import descendants, parse_metrics, problem, send_and_hang_up, serve
 
 RANDOM_SEED = 1234

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from app.api.poses import pose_json
+from app.api.schemas.poses import pose_json
 from app.kinematics.rotations import (
     matrix_to_quaternion,
     matrix_to_rpy,

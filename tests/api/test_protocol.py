@@ -13,7 +13,7 @@ from fastapi.routing import iter_route_contexts
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 
 #: Any path parameter gets an existing catalog robot (or a harmless name): the body must be
 #: refused before the parameter matters.

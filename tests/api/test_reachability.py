@@ -15,7 +15,7 @@ from fastapi.testclient import TestClient
 
 from app.kinematics.models import RobotModel
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.helpers import poll_live, serve
 from tests.kinematics.chains import L1, L2, planar2_urdf
 

@@ -41,7 +41,7 @@ def test_first_ik_query_gets_its_whole_budget(monkeypatch) -> None:
     from app.kinematics import ik
     from app.kinematics.ik.precompute import IKChain
     from app.kinematics.ik.problem import IKOptions
-    from app.registry import Registry
+    from app.robots.registry import Registry
 
     now = [0.0]
 

@@ -19,7 +19,7 @@ from hypothesis import settings as hsettings
 from hypothesis import strategies as st
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.helpers import problem, serve
 
 TABLE = {

@@ -19,7 +19,7 @@ import yourdfpy
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.helpers import problem
 from tests.packages import (
     PANDA_DIR,

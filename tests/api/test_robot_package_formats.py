@@ -18,7 +18,7 @@ import yourdfpy
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.helpers import problem
 from tests.packages import PANDA_DIR, assert_fk_matches, panda_files, panda_urdf, zip_bytes
 

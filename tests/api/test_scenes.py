@@ -8,7 +8,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 
 TABLE = {
     "name": "table",
@@ -128,7 +128,7 @@ def test_concurrent_creators_one_wins(tmp_path) -> None:
     from concurrent.futures import ThreadPoolExecutor
 
     from app.kinematics.errors import ConflictError
-    from app.scenes import SceneStore
+    from app.storage.scenes import SceneStore
 
     stores = [SceneStore(tmp_path / "scenes") for _ in range(2)]
 

@@ -20,7 +20,7 @@ from starlette.websockets import WebSocketDisconnect
 from websockets.sync.client import connect
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.helpers import fk_target, serve
 
 Q_UR5 = [0.3, -1.1, 1.4, -0.6, 1.2, 0.4]
@@ -265,7 +265,7 @@ def test_a_long_first_message_of_an_unauthenticated_socket_is_refused_unread(
     """Authentication by message: a first message over 64 KiB closes with 1008 before it
     is parsed (an unauthenticated client cannot make the server build Python objects from
     up to 1 MiB of JSON); a token message with a long id within it is accepted."""
-    from app.api import stream
+    from app.api.routes import stream
 
     parsed: list[int] = []
     real = stream.parse_text
@@ -334,7 +334,7 @@ def test_a_bug_in_one_message_is_a_500_error_message_and_the_socket_stays_usable
     client, monkeypatch
 ) -> None:
     """An unexpected exception while answering: logged, answered as the HTTP guard's 500."""
-    from app.api import stream
+    from app.api.routes import stream
 
     real = stream.jacobian_answer
 

@@ -418,7 +418,7 @@ def test_collision_triangles_are_bounded_per_file_and_per_robot(tmp_path: Path) 
     header calls one face, refused by the child. Per robot (what a worker holds): the
     loader's total. Visual meshes are bounded by DENAVIT_MAX_MESH_VERTICES only."""
     from app.main import create_app
-    from app.settings import Settings
+    from app.operations.settings import Settings
 
     settings = Settings(
         data_dir=tmp_path / "data", max_collision_mesh_triangles=1000, max_collision_triangles=1500
@@ -458,7 +458,7 @@ def test_a_robot_stored_before_the_checks_is_checked_in_the_child(tmp_path: Path
     import json
 
     from app.main import create_app
-    from app.settings import Settings
+    from app.operations.settings import Settings
 
     settings = Settings(data_dir=tmp_path / "data", max_collision_mesh_triangles=1000)
     with TestClient(create_app(settings), raise_server_exceptions=False) as client:

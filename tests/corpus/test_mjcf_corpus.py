@@ -42,7 +42,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.corpus import mjcf_reference
 from tests.corpus.upload import upload_case
 from tests.helpers import problem

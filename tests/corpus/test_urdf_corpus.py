@@ -34,7 +34,7 @@ from fastapi.testclient import TestClient
 from lxml import etree
 
 from app.main import create_app
-from app.settings import Settings
+from app.operations.settings import Settings
 from tests.corpus.upload import pack_case, upload_case
 from tests.corpus.urdf_reference import Reference, ament_prefix, resolve_uri, run_xacro
 

@@ -7,7 +7,6 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
-from app.catalog import load_catalog
 from app.kinematics import ik
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import (
@@ -20,6 +19,7 @@ from app.kinematics.groups import (
 )
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.models import RobotModel
+from app.robots.catalog import load_catalog
 
 
 def _joint(name: str, parent: str, child: str, jtype: str, extra: str = "", xyz: str = "0 0 0.3"):

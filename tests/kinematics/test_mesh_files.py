@@ -19,7 +19,6 @@ import numpy as np
 import pytest
 import trimesh
 
-from app.catalog import erd_share_dir
 from app.kinematics.mesh_files import (
     MeshFileError,
     MeshTooLarge,
@@ -28,6 +27,7 @@ from app.kinematics.mesh_files import (
     mesh_references,
     statements,
 )
+from app.robots.catalog import erd_share_dir
 
 CATALOG = erd_share_dir() / "example-robot-data" / "robots"
 BIG = 10**9
@@ -62,7 +62,7 @@ def test_counts_equal_what_trimesh_wrote(tmp_path: Path, suffix: str, options: d
 
 def _catalog_folders() -> list[Path]:
     """The example-robot-data folders of the service's catalog robots."""
-    from app.catalog import load_catalog
+    from app.robots.catalog import load_catalog
 
     return sorted({CATALOG / entry.urdf.split("/", 1)[0] for entry in load_catalog().values()})
 

@@ -15,7 +15,7 @@ from app.kinematics.analysis import (
     yoshikawa_components,
 )
 from app.kinematics.chain import PinocchioChain, SerialChain
-from app.kinematics.errors import InvalidInputError
+from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.models import RobotModel
 from app.kinematics.reachability.bins import (
@@ -23,16 +23,11 @@ from app.kinematics.reachability.bins import (
     orientation_bin_from_rotation,
     orientation_bins,
 )
-from app.kinematics.reachability.build import (
-    Cancelled,
-    MapBuilder,
-    Progress,
-    build_map,
-    chunk_samples,
-)
+from app.kinematics.reachability.build import MapBuilder, Progress, chunk_samples
 from app.kinematics.reachability.map import ReachabilityMap, summarize
 from app.kinematics.reachability.spec import default_bounds, make_spec
 from app.kinematics.rotations import matrix_to_quaternion, quaternion_to_matrix
+from app.workers.map_build import build_map
 from tests.kinematics.chains import COLLIDING_URDF, L1, L2, planar2_urdf, planar_map_spec
 
 

@@ -14,7 +14,7 @@ import pytest
 import yaml
 from pydantic import ValidationError
 
-from app.api.timing_schemas import TimingIn, timing_of
+from app.api.schemas.timing import TimingIn, timing_of
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.models import RobotModel
 from app.kinematics.paths import timing as timing_mod

@@ -6,8 +6,8 @@ from __future__ import annotations
 import pinocchio as pin
 import pytest
 
-from app.catalog import load_catalog
 from app.kinematics.urdf_model import build_model
+from app.robots.catalog import load_catalog
 from tests.mimic_robots import gripper
 
 

@@ -1,0 +1,2 @@
+"""Running the service: configuration (``settings``), JSON logs (``logs``), Prometheus
+metrics (``metrics``)."""

@@ -1,0 +1,237 @@
+"""/metrics sums the counters of every worker process of the service (app.operations.metrics_shm):
+a live 2-worker server, where every scrape must report the service's totals, whichever
+worker answers, and never less than before (a killed worker's counters included); and the
+shared value files themselves."""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import signal
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+from typing import Any
+
+import httpx
+import pytest
+
+from app.middleware.observability import ObservabilityMiddleware
+from app.operations.metrics import Metrics
+from app.operations.metrics_shm import (
+    INITIAL_SIZE,
+    ValueFile,
+    pid_namespace,
+    process_start,
+    read_directory,
+    read_values,
+    remove_stale_instances,
+)
+from tests.helpers import parse_metrics, serve
+
+ROBOTS_200 = 'denavit_http_requests_total{method="GET",route="/robots",status="200"}'
+ROBOTS_COUNT = 'denavit_http_request_duration_seconds_count{method="GET",route="/robots"}'
+SCRAPES_200 = 'denavit_http_requests_total{method="GET",route="/metrics",status="200"}'
+
+
+def scrape(url: str) -> tuple[int, dict[str, float]]:
+    """One scrape on a new connection: (pid of the answering worker, samples)."""
+    with httpx.Client(timeout=30) as client:
+        r = client.get(url + "/metrics")
+    assert r.status_code == 200, r.text
+    samples = parse_metrics(r.text)
+    pids = [k for k in samples if k.startswith("denavit_process_info{")]
+    assert len(pids) == 1, pids
+    return int(pids[0].split('"')[1]), samples
+
+
+def counters(samples: dict[str, float]) -> dict[str, float]:
+    """The samples of counter and histogram families (which must never decrease)."""
+    return {
+        k: v
+        for k, v in samples.items()
+        if k.startswith(("denavit_http_request", "denavit_ik_requests_total"))
+        and not k.startswith("denavit_http_requests_in_flight")
+    }
+
+
+def assert_not_decreasing(before: dict[str, float], after: dict[str, float]) -> None:
+    went_down = {k: (v, after.get(k, 0.0)) for k, v in before.items() if after.get(k, 0.0) < v}
+    assert not went_down, went_down
+
+
+def scrape_thread(url: str, n: int) -> list[tuple[int, dict[str, float]]]:
+    """``n`` scrapes one after another, each on a new connection; every scrape must count
+    the scrapes this thread completed before it and no counter may go down."""
+    seen: list[tuple[int, dict[str, float]]] = []
+    for i in range(n):
+        pid, samples = scrape(url)
+        assert samples.get(SCRAPES_200, 0) >= i  # earlier scrapes of this thread, at least
+        if seen:
+            assert_not_decreasing(counters(seen[-1][1]), counters(samples))
+        seen.append((pid, samples))
+    return seen
+
+
+def test_every_scrape_of_two_workers_reports_the_service_total(tmp_path) -> None:
+    n = 60
+    with serve(tmp_path / "data", "--workers", "2") as server:
+        url = server.url
+        with ThreadPoolExecutor(max_workers=4) as pool:
+            # new connections: the kernel hands them to both workers
+            codes = list(pool.map(lambda _: httpx.get(url + "/robots", timeout=30), range(n)))
+            assert [c.status_code for c in codes] == [200] * n
+            runs = list(pool.map(lambda _: scrape_thread(url, 25), range(4)))
+        answered = {pid for run in runs for pid, _ in run}
+        for _ in range(400):  # both workers must have answered (new connections, bounded)
+            if len(answered) == 2:
+                break
+            answered.add(scrape(url)[0])
+        assert len(answered) == 2, answered
+        for run in runs:
+            for pid, samples in run:
+                assert samples[ROBOTS_200] == n, (pid, samples[ROBOTS_200])
+                assert samples[ROBOTS_COUNT] == n
+                assert samples['denavit_worker_processes{state="live"}'] >= 1
+                assert samples["denavit_http_requests_in_flight"] >= 1  # this scrape
+
+        # A killed worker's counters stay in the totals; the supervisor replaces it.
+        high = {}
+        for run in runs:
+            for _, samples in run:
+                high = {k: max(v, high.get(k, 0.0)) for k, v in counters(samples).items()}
+        victim = next(iter(answered))
+        os.kill(victim, signal.SIGKILL)
+        end = time.monotonic() + 120
+        while True:
+            pid, samples = scrape(url)
+            assert_not_decreasing(high, counters(samples))
+            assert samples[ROBOTS_200] == n
+            replaced = samples['denavit_worker_processes{state="live"}'] == 2
+            if replaced and samples['denavit_worker_processes{state="exited"}'] >= 1:
+                break
+            assert time.monotonic() < end, "the killed worker was not replaced"
+            time.sleep(0.1)
+        for run in [scrape_thread(url, 10)]:
+            for pid, samples in run:
+                assert pid != victim
+                assert samples[ROBOTS_200] == n
+                assert_not_decreasing(high, counters(samples))
+
+
+# ---------------------------------------------------------------------------------------------
+# In process
+
+
+def _reaped_pid() -> int:
+    """The pid of a process that has exited and been reaped."""
+    proc = subprocess.Popen([sys.executable, "-c", "pass"])
+    proc.wait()
+    return proc.pid
+
+
+def test_a_request_is_counted_before_its_last_byte_is_sent() -> None:
+    """A client that has the whole response can scrape at once (on another worker) and
+    must find its request counted."""
+    metrics = Metrics()
+    seen: list[int] = []
+
+    class Route:
+        path = "/r"
+
+    async def app(scope: dict[str, Any], receive: Any, send: Any) -> None:
+        scope["route"] = Route()
+        await send({"type": "http.response.start", "status": 200, "headers": []})
+        await send({"type": "http.response.body", "body": b"a", "more_body": True})
+        await send({"type": "http.response.body", "body": b"b"})
+
+    async def send(message: dict[str, Any]) -> None:
+        if message["type"] == "http.response.body":
+            text = metrics.render().decode()
+            key = 'denavit_http_requests_total{method="GET",route="/r",status="200"}'
+            seen.append(int(parse_metrics(text).get(key, 0)))
+
+    async def receive() -> dict[str, Any]:
+        return {"type": "http.request", "body": b""}
+
+    scope = {"type": "http", "method": "GET", "path": "/r", "headers": []}
+    middleware = ObservabilityMiddleware(app, access_log=False, metrics=metrics)
+    asyncio.run(middleware(scope, receive, send))
+    assert seen == [0, 1]  # not after the first part, before the last one
+
+
+def test_value_file_grows_and_readers_see_every_value(tmp_path) -> None:
+    f = ValueFile(tmp_path / "1-1.db")
+    early = f.values  # a view fetched before the file grows
+    first = f.slot('["first"]', 3)
+    keys = [f'["key", {i}, "{"x" * 40}"]' for i in range(2000)]  # > INITIAL_SIZE in all
+    for i, key in enumerate(keys):
+        index = f.slot(key)  # first: it may replace f.values
+        f.values[index] = float(i)
+    assert (tmp_path / "1-1.db").stat().st_size > INITIAL_SIZE
+    early[first + 2] = 7.0  # writes through an old view land in the same file
+    got = read_values(tmp_path / "1-1.db")
+    assert got['["first"]'] == [0.0, 0.0, 7.0]
+    assert [got[k][0] for k in keys] == [float(i) for i in range(2000)]
+    assert f.snapshot() == got
+
+
+def test_scrape_sums_live_and_dead_workers_but_gauges_only_live(tmp_path) -> None:
+    me = Metrics()
+    me.share(tmp_path)
+    me.observe("GET", "/x", 200, 0.002)
+    me.record_ik(True)
+    me.enter()
+    dead = ValueFile(tmp_path / f"{_reaped_pid()}-12345.db")
+    for key, value in [
+        ('["s","GET","/x",200]', 4.0),
+        ('["s","GET","/x",500]', 1.0),
+        ('["ik","success"]', 2.0),
+        ('["g","in_flight"]', 3.0),  # it died with requests in flight
+    ]:
+        index = dead.slot(key)
+        dead.values[index] = value
+    text = me.render().decode()
+    samples = parse_metrics(text)
+    assert samples['denavit_http_requests_total{method="GET",route="/x",status="200"}'] == 5
+    assert samples['denavit_http_requests_total{method="GET",route="/x",status="500"}'] == 1
+    assert samples['denavit_ik_requests_total{result="success"}'] == 3
+    assert samples["denavit_http_requests_in_flight"] == 1
+    assert samples['denavit_worker_processes{state="live"}'] == 1
+    assert samples['denavit_worker_processes{state="exited"}'] == 1
+    assert f'process_resident_memory_bytes{{pid="{os.getpid()}"}}' in samples
+    assert not any("12345" in k or f'pid="{dead.path.stem.split("-")[0]}"' in k for k in samples)
+    assert {p.alive for p in read_directory(tmp_path)} == {True, False}
+
+
+def test_directories_of_stopped_services_are_removed(tmp_path) -> None:
+    ns = pid_namespace()
+    mine = f"{ns}-{os.getpid()}-{process_start(os.getpid())}"
+    stopped = f"{ns}-{_reaped_pid()}-12345"
+    other_namespace = f"{ns + 1}-{_reaped_pid()}-12345"
+    for name in (mine, stopped, other_namespace, "unrelated"):
+        (tmp_path / name).mkdir()
+    assert remove_stale_instances(tmp_path, ns) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [mine, other_namespace, "unrelated"]
+    )
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="fork")
+def test_a_forked_child_does_not_write_into_its_parents_file(tmp_path) -> None:
+    me = Metrics()
+    me.share(tmp_path)
+    me.observe("GET", "/x", 200, 0.002)
+    pid = os.fork()
+    if pid == 0:  # the child: count 10 requests, then leave without clean-up
+        try:
+            for _ in range(10):
+                me.observe("GET", "/x", 200, 0.002)
+        finally:
+            os._exit(0)
+    os.waitpid(pid, 0)
+    files = {p.name: read_values(p) for p in Path(tmp_path).iterdir()}
+    assert list(files) == [f"{os.getpid()}-{process_start(os.getpid())}.db"]
+    assert next(iter(files.values()))['["s","GET","/x",200]'] == [1.0]
