@@ -234,9 +234,8 @@ def _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa):  # pragma: no cover
     clipped = False
     for s in range(k):
         v = q_old[s] - scale * nd[s]
-        if cont[s]:
-            v = v + math.pi
-            v = v - two_pi * math.floor(v / two_pi) - math.pi
+        if cont[s]:  # wrapped to (−π, π] (app.kinematics.angles.wrap_scalar)
+            v = v - two_pi * math.ceil((v - math.pi) / two_pi)
         q_new[s] = v
         if v < lo[s]:
             v = lo[s]

@@ -21,17 +21,17 @@ import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
-from xml.etree.ElementTree import Element
 
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics.angles import wrap_angle
 from app.kinematics.errors import InvalidInputError, UnknownNameError
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
 from app.kinematics.semantics import parse_semantics
 from app.kinematics.tip import bare_links, default_tip
-from app.kinematics.urdf_model import build_model
+from app.kinematics.urdf_model import build_model, model_axis, urdf_joint_table
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 #: Frame types in the order a name is resolved when several frames share it.
@@ -134,61 +134,6 @@ class Frame:
     parent_joint: str | None
 
 
-def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:
-    if not text:
-        return default
-    return tuple(float(v) for v in text.split())
-
-
-def _model_axis(jm: Any) -> tuple[float, float, float] | None:
-    """The axis Pinocchio's joint model moves along (what FK uses), ``None`` if not 1-DoF.
-
-    Read from the joint's motion subspace S (6×1, linear then angular): the angular part
-    for a revolute joint, the linear part for a prismatic one. Pinocchio's URDF parser
-    normalises the URDF ``<axis>`` (``0 0 2`` moves along ``0 0 1``).
-    """
-    if jm.nv != 1:
-        return None
-    S = np.asarray(jm.createData().S, dtype=float).reshape(-1)
-    if S.shape != (6,):
-        return None
-    part = S[3:] if np.any(S[3:]) else S[:3]
-    return (float(part[0]), float(part[1]), float(part[2]))
-
-
-def urdf_joint_table(root: Element) -> dict[str, dict[str, Any]]:
-    """Joint descriptions of a parsed URDF, keyed by joint name.
-
-    ``root`` is the document read with literal (namespace-unaware) names, as Pinocchio's
-    URDF parser reads it (:func:`app.kinematics.xmldoc.parse_literal_xml`).
-    """
-    joints: dict[str, dict[str, Any]] = {}
-    for j in root.iter("joint"):
-        name = j.get("name")
-        if not name or j.find("parent") is None:  # transmission joints have no parent
-            continue
-        limit = j.find("limit")
-        axis = j.find("axis")
-
-        def lim(attr: str, limit: Any = limit) -> float | None:
-            if limit is None or limit.get(attr) is None:
-                return None
-            return float(limit.get(attr))
-
-        joints[name] = {
-            "type": j.get("type"),
-            "parent": j.find("parent").get("link"),
-            "child": j.find("child").get("link"),
-            "axis": _floats(axis.get("xyz") if axis is not None else None, (1.0, 0.0, 0.0)),
-            "lower": lim("lower"),
-            "upper": lim("upper"),
-            "velocity": lim("velocity"),
-            "effort": lim("effort"),
-            "mimic": j.find("mimic") is not None,
-        }
-    return joints
-
-
 class RobotModel:
     """A robot the service can answer for.
 
@@ -266,7 +211,7 @@ class RobotModel:
                     type=jtype,
                     parent=desc.get("parent", ""),
                     child=desc.get("child", ""),
-                    axis=_model_axis(jm) or tuple(desc.get("axis", (1.0, 0.0, 0.0))),
+                    axis=model_axis(jm) or tuple(desc.get("axis", (1.0, 0.0, 0.0))),
                     lower=lower,
                     upper=upper,
                     velocity=vel if math.isfinite(vel) else None,
@@ -293,6 +238,7 @@ class RobotModel:
         self._plain_wire = np.flatnonzero(~cont)
         self._plain_q = np.array([j.idx_q for j in self.joints if not j.continuous], dtype=int)
         self._cont_wire = np.flatnonzero(cont)
+        self._cont_wire.flags.writeable = False
         self._cont_q = np.array([j.idx_q for j in self.joints if j.continuous], dtype=int)
         #: Columns of Pinocchio's nv-wide Jacobian that belong to the wire joints.
         self.v_index = np.array([j.idx_v for j in self.joints], dtype=int)
@@ -376,6 +322,35 @@ class RobotModel:
         hi = np.where(np.isfinite(self.upper), self.upper, 0.0)
         return np.clip(0.5 * lo + 0.5 * hi, -MAX_JOINT_VALUE, MAX_JOINT_VALUE)
 
+    @property
+    def continuous(self) -> np.ndarray:
+        """Wire indices of the continuous joints (read-only)."""
+        return self._cont_wire
+
+    def wrap(self, q: np.ndarray) -> np.ndarray:
+        """A copy of wire configuration(s) ``q`` (…, n) with the continuous joints' angles
+        wrapped to (−π, π] (:func:`app.kinematics.angles.wrap_angle`)."""
+        out = np.array(q, dtype=float)
+        if self.has_continuous:
+            out[..., self._cont_wire] = wrap_angle(out[..., self._cont_wire])
+        return out
+
+    def difference(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """``b − a`` on the wire, continuous joints the short way round the circle (in
+        (−π, π]): ``a + difference(a, b)`` is ``b`` up to whole turns."""
+        d = np.asarray(b, dtype=float) - np.asarray(a, dtype=float)
+        if self.has_continuous:
+            d[..., self._cont_wire] = wrap_angle(d[..., self._cont_wire])
+        return d
+
+    def unwrap_path(self, qs: np.ndarray) -> np.ndarray:
+        """A copy of the path ``qs`` (N, n) whose continuous joints never jump by more than
+        π between points (``np.unwrap``): a crossing of ±π is a small move, not a turn."""
+        out = np.array(qs, dtype=float)
+        if self.has_continuous:
+            out[:, self._cont_wire] = np.unwrap(out[:, self._cont_wire], axis=0)
+        return out
+
     def to_pin(self, q: np.ndarray) -> np.ndarray:
         """Wire configuration (n,) → Pinocchio configuration (nq,)."""
         out = np.empty(self.model.nq)
@@ -397,11 +372,14 @@ class RobotModel:
         return out
 
     def from_pin(self, q_pin: np.ndarray) -> np.ndarray:
-        """Pinocchio configuration (nq,) → wire configuration (n,); angles in (−π, π]."""
+        """Pinocchio configuration (nq,) → wire configuration (n,); continuous joints' angles
+        in (−π, π] (:func:`app.kinematics.angles.wrap_angle`)."""
         out = np.empty(self.n)
         out[self._plain_wire] = q_pin[self._plain_q]
         if self.has_continuous:
-            out[self._cont_wire] = np.arctan2(q_pin[self._cont_q + 1], q_pin[self._cont_q])
+            # arctan2 gives −π for sin = −0.0 or −1e-16: wrapped to (−π, π] like every angle
+            th = np.arctan2(q_pin[self._cont_q + 1], q_pin[self._cont_q])
+            out[self._cont_wire] = wrap_angle(th)
         return out
 
     def configuration(

@@ -31,7 +31,7 @@ The robot's default tip from the SRDF (rule 1 of the default tip) is the ``paren
 the first ``<end_effector>`` in document order (:meth:`Semantics.default_tip`).
 
 Everything here is pure: the URDF enters as the joint table of
-:func:`app.kinematics.models.urdf_joint_table` (name → type, parent, child, limits,
+:func:`app.kinematics.urdf_model.urdf_joint_table` (name → type, parent, child, limits,
 mimic). :func:`resolve` raises :class:`InvalidInputError` naming the SRDF element for every
 inconsistency, so uploads are checked with it (:mod:`app.robots.documents.srdf`) and models built
 from checked documents resolve without error.
@@ -199,7 +199,7 @@ def resolve(
     sem
         The SRDF's semantics (:func:`parse_semantics`).
     joints
-        The URDF's joints (:func:`app.kinematics.models.urdf_joint_table`): name →
+        The URDF's joints (:func:`app.kinematics.urdf_model.urdf_joint_table`): name →
         ``type``, ``parent``, ``child``, ``lower``, ``upper``, ``mimic``.
     strict
         Raise on the first inconsistency (uploads). Models built from the catalog's SRDFs

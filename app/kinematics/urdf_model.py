@@ -36,8 +36,10 @@ import math
 from collections.abc import Mapping
 from copy import deepcopy
 from dataclasses import dataclass
+from typing import Any
 from xml.etree.ElementTree import Element, SubElement, tostring
 
+import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
@@ -295,3 +297,58 @@ def _build_copy(root: Element, order: list[str] | None, continuous: set[str]) ->
         if frame.name in original:
             model.frames[fid].name = original[frame.name]
     return model
+
+
+def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:
+    if not text:
+        return default
+    return tuple(float(v) for v in text.split())
+
+
+def model_axis(jm: Any) -> tuple[float, float, float] | None:
+    """The axis Pinocchio's joint model moves along (what FK uses), ``None`` if not 1-DoF.
+
+    Read from the joint's motion subspace S (6×1, linear then angular): the angular part
+    for a revolute joint, the linear part for a prismatic one. Pinocchio's URDF parser
+    normalises the URDF ``<axis>`` (``0 0 2`` moves along ``0 0 1``).
+    """
+    if jm.nv != 1:
+        return None
+    S = np.asarray(jm.createData().S, dtype=float).reshape(-1)
+    if S.shape != (6,):
+        return None
+    part = S[3:] if np.any(S[3:]) else S[:3]
+    return (float(part[0]), float(part[1]), float(part[2]))
+
+
+def urdf_joint_table(root: Element) -> dict[str, dict[str, Any]]:
+    """Joint descriptions of a parsed URDF, keyed by joint name.
+
+    ``root`` is the document read with literal (namespace-unaware) names, as Pinocchio's
+    URDF parser reads it (:func:`app.kinematics.xmldoc.parse_literal_xml`).
+    """
+    joints: dict[str, dict[str, Any]] = {}
+    for j in root.iter("joint"):
+        name = j.get("name")
+        if not name or j.find("parent") is None:  # transmission joints have no parent
+            continue
+        limit = j.find("limit")
+        axis = j.find("axis")
+
+        def lim(attr: str, limit: Any = limit) -> float | None:
+            if limit is None or limit.get(attr) is None:
+                return None
+            return float(limit.get(attr))
+
+        joints[name] = {
+            "type": j.get("type"),
+            "parent": j.find("parent").get("link"),
+            "child": j.find("child").get("link"),
+            "axis": _floats(axis.get("xyz") if axis is not None else None, (1.0, 0.0, 0.0)),
+            "lower": lim("lower"),
+            "upper": lim("upper"),
+            "velocity": lim("velocity"),
+            "effort": lim("effort"),
+            "mimic": j.find("mimic") is not None,
+        }
+    return joints

@@ -139,10 +139,7 @@ def _follow(
 def _timing(robot: RobotModel, points: list, timing: TimingIn, grp: Group | None) -> dict:
     """The timing of the accepted points: continuous joints unwrapped (the path crosses ±π
     as a small move, not a 2π one), limit lists in the group's joints when there is one."""
-    qs = np.array([p.q for p in points])
-    if robot.has_continuous:
-        c = robot._cont_wire
-        qs[:, c] = np.unwrap(qs[:, c], axis=0)
+    qs = robot.unwrap_path(np.array([p.q for p in points]))
     return timing_of(robot, qs, timing, None if grp is None else grp.indices)
 
 

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics.angles import wrap_scalar
 from app.kinematics.models import RobotModel
 
 PARALLEL = 1e-9  # |a1 × a2| below this: parallel axes
@@ -122,18 +123,18 @@ def planar2_solutions(geo: Planar2, point: np.ndarray) -> list[tuple[float, floa
 def into_limits(q: float, lower: float, upper: float, seed: float) -> float:
     """``q`` shifted by a multiple of 2π into [lower, upper] (closest to ``seed``).
 
-    Continuous joints (infinite limits) are wrapped to [−π, π). When no shift fits, ``q``
-    wrapped to [−π, π) is returned (and fails the caller's limit check). A non-finite ``q``
+    Continuous joints (infinite limits) are wrapped to (−π, π]. When no shift fits, ``q``
+    wrapped to (−π, π] is returned (and fails the caller's limit check). A non-finite ``q``
     (a closed form on overflowing geometry) is returned as is: FK verification rejects it.
     """
     if not math.isfinite(q):
         return q
     if not (math.isfinite(lower) and math.isfinite(upper)):
-        return (q + math.pi) % (2.0 * math.pi) - math.pi
+        return wrap_scalar(q)
     two_pi = 2.0 * math.pi
     k_lo = math.ceil((lower - q) / two_pi - 1e-12)
     k_hi = math.floor((upper - q) / two_pi + 1e-12)
     if k_lo > k_hi:
-        return (q + math.pi) % two_pi - math.pi
+        return wrap_scalar(q)
     options = [min(upper, max(lower, q + k * two_pi)) for k in range(k_lo, k_hi + 1)]
     return min(options, key=lambda x: abs(x - seed))

@@ -326,7 +326,8 @@ def _into_limits_nb(Q, n, lower, upper, seed):  # pragma: no cover
         for i in range(Q.shape[1]):
             q = Q[r, i]
             lo, hi = lower[i], upper[i]
-            wrapped = q + math.pi - two_pi * math.floor((q + math.pi) / two_pi) - math.pi
+            # wrapped to (−π, π] (app.kinematics.angles.wrap_scalar)
+            wrapped = q - two_pi * math.ceil((q - math.pi) / two_pi)
             if not (math.isfinite(lo) and math.isfinite(hi)):
                 Q[r, i] = wrapped
                 continue

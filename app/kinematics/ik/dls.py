@@ -28,10 +28,11 @@ import numpy as np
 import pinocchio as pin
 from scipy.linalg.lapack import dposv as _posv
 
+from app.kinematics.angles import wrap_angle
+
 if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
 
-_TWO_PI = 2.0 * math.pi
 #: Damping floor μ added to λ² (keeps A invertible at exact singularities).
 MU = 1e-10
 #: Error-proportional damping: λ² = DAMP·‖e‖² + μ.
@@ -202,13 +203,13 @@ class _Loop:
 
 def _move(qa: np.ndarray, nd: np.ndarray, cont: np.ndarray | None) -> np.ndarray:
     """qa − nd with the step length capped at :data:`MAX_STEP`, the continuous joints (at
-    positions ``cont``, None: none) wrapped to [−π, π); not yet clipped to the limits."""
+    positions ``cont``, None: none) wrapped to (−π, π]; not yet clipped to the limits."""
     n2 = nd @ nd
     if n2 > _MAX_STEP2:
         nd *= MAX_STEP / math.sqrt(n2)
     q_new = qa - nd
     if cont is not None:
-        q_new[cont] = (q_new[cont] + math.pi) % _TWO_PI - math.pi
+        q_new[cont] = wrap_angle(q_new[cont])
     return q_new
 
 

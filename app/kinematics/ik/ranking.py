@@ -57,21 +57,10 @@ if TYPE_CHECKING:
 #: one cluster (single linkage).
 CLUSTER_THRESHOLD = 0.5
 
-_TWO_PI = 2.0 * math.pi
-
-
-def wrap_angle(x: np.ndarray) -> np.ndarray:
-    """Angles wrapped to [−π, π)."""
-    return (x + math.pi) % _TWO_PI - math.pi
-
 
 def joint_distance(robot: RobotModel, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Per-joint |a − b| on the wire, continuous joints measured around the circle."""
-    d = np.abs(a - b)
-    if robot.has_continuous:
-        c = robot._cont_wire
-        d[c] = np.abs(wrap_angle(a[c] - b[c]))
-    return d
+    return np.abs(robot.difference(a, b))
 
 
 class Grouping:

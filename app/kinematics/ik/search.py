@@ -25,7 +25,7 @@ from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.ik.failure import classify, outside_limits
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
-from app.kinematics.ik.ranking import Grouping, joint_distance, representatives, wrap_angle
+from app.kinematics.ik.ranking import Grouping, joint_distance, representatives
 
 #: Two solutions are distinct when some joint differs by more than this (rad or m).
 DISTINCT = 1e-3
@@ -177,9 +177,7 @@ class Search:
         robot = self.robot
         q = self.q_seed.copy()
         q[self.ch.active] = qa
-        if robot.has_continuous:
-            c = robot._cont_wire
-            q[c] = wrap_angle(q[c])
+        q = robot.wrap(q)
         if not _within(q.tolist(), self.ch.wire_lower, self.ch.wire_upper):
             if self.outside_limits is None:
                 self._note_outside_limits(q)
@@ -354,11 +352,7 @@ class Search:
         """The lowest-error configuration met (wire, continuous joints wrapped) and its
         position (m) and orientation (rad) errors."""
         robot = self.robot
-        q = self.best_q
-        if robot.has_continuous:
-            c = robot._cont_wire
-            q = q.copy()
-            q[c] = wrap_angle(q[c])
+        q = robot.wrap(self.best_q)
         model, data = robot.model, robot.data
         pin.forwardKinematics(model, data, robot.to_pin(q))
         T = pin.updateFramePlacement(model, data, self.ch.frame_id)

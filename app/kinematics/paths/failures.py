@@ -33,7 +33,7 @@ import pinocchio as pin
 from app.kinematics.fk import frame_pose
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
-from app.kinematics.ik.search import IKResult, joint_distance, wrap_angle
+from app.kinematics.ik.search import IKResult, joint_distance
 from app.kinematics.jacobian import frame_jacobian_by_id
 from app.kinematics.models import RobotModel
 
@@ -212,9 +212,7 @@ def classify(
     elif guard.other_branches:
         lab, q = guard.other_branches[0]
         # The flags change sign where the arm is singular: look half-way to the solution too.
-        dq = q - last.q
-        if robot.has_continuous:
-            dq[robot._cont_wire] = wrap_angle(dq[robot._cont_wire])
+        dq = robot.difference(last.q, q)
         sigma_mid = smallest_singular_value(robot, chain, task, last.q + 0.5 * dq)
         singular = singular or sigma_mid < SINGULAR_SIGMA
         near = (

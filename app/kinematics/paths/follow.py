@@ -54,7 +54,6 @@ from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.branches import branch_label
 from app.kinematics.ik.precompute import IKChain, ik_chain
 from app.kinematics.ik.problem import IKOptions, frame_name
-from app.kinematics.ik.search import wrap_angle
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
 from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
@@ -289,10 +288,7 @@ class _Walk:
         f(1 − f), largest at f = 1/2, so when the middle is within half the bounds the other
         fractions are skipped."""
         robot = self.robot
-        dq = b.q - a.q
-        if robot.has_continuous:
-            c = robot._cont_wire
-            dq[c] = wrap_angle(dq[c])
+        dq = robot.difference(a.q, b.q)
         worst_p = worst_r = 0.0
         dev_p, dev_r = self.options.max_deviation
         for k, f in enumerate(MIDDLE_FIRST):

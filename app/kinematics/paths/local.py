@@ -36,7 +36,6 @@ from app.kinematics.ik.dls import (
 )
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
-from app.kinematics.ik.search import wrap_angle
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, residuals
 
@@ -131,7 +130,7 @@ def verify(
     tolerance
         (position m, rotation rad) the pose error must be within.
     q
-        Candidate wire configuration (continuous joints are wrapped to [−π, π)).
+        Candidate wire configuration (continuous joints are wrapped to (−π, π]).
     target
         The pose it must reach (root frame).
     guard
@@ -143,10 +142,7 @@ def verify(
         The wrapped configuration and its errors (m, rad) from a separate forward kinematics,
         or None when it is outside the limits, off the pose, or refused by the guard.
     """
-    q = np.array(q, dtype=float)
-    if robot.has_continuous:
-        c = robot._cont_wire
-        q[c] = wrap_angle(q[c])
+    q = robot.wrap(q)
     if not ((q >= robot.lower) & (q <= robot.upper)).all():  # NaN fails too
         return None
     ep, er = residuals(frame_pose(robot, q, chain.frame_id), target, task)

@@ -50,7 +50,7 @@ def check_srdf_document(
     joints: Mapping[str, Mapping[str, Any]] | None = None,
 ) -> None:
     """Checks of an uploaded SRDF: safe XML, a <robot> root, known links in collision pairs,
-    and, given the URDF's ``joints`` (:func:`app.kinematics.models.urdf_joint_table`),
+    and, given the URDF's ``joints`` (:func:`app.kinematics.urdf_model.urdf_joint_table`),
     groups, end effectors and group states that resolve (422 naming the SRDF element)."""
     root = parse_literal_xml(text, field, limits)
     if root.tag != "robot":

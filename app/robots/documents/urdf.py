@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 from xml.etree.ElementTree import Element
 
 from app.kinematics.errors import InvalidInputError, UnknownNameError
-from app.kinematics.models import MAX_JOINT_VALUE, RobotModel, urdf_joint_table
-from app.kinematics.urdf_model import mimic_specs
+from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
+from app.kinematics.urdf_model import mimic_specs, urdf_joint_table
 from app.kinematics.xmldoc import XmlLimits, parse_literal_xml
 from app.robots.documents.srdf import check_srdf_document
 
