@@ -73,6 +73,22 @@ def test_core_imports_nothing_from_the_app_outside_the_core(path: Path) -> None:
     assert not bad, f"{_rel(path)} imports {bad}"
 
 
+#: Modules that start processes: the core leaves them to app.workers (and app.robots.documents'
+#: bounded child).
+PROCESS_MODULES = {"multiprocessing", "concurrent.futures.process", "subprocess"}
+
+
+@pytest.mark.parametrize("path", _modules("app/kinematics"), ids=_rel)
+def test_the_core_starts_no_process(path: Path) -> None:
+    bad = sorted(
+        m
+        for m in imported(path)
+        if any(m == p or m.startswith(p + ".") for p in PROCESS_MODULES)
+        or m in {"concurrent.futures.ProcessPoolExecutor", "os.fork"}
+    )
+    assert not bad, f"{_rel(path)} imports {bad}: process pools belong in app/workers"
+
+
 @pytest.mark.parametrize("path", _modules("dh2urdf"), ids=_rel)
 def test_dh2urdf_imports_nothing_from_the_app(path: Path) -> None:
     bad = sorted(m for m in imported(path) if m == "app" or m.startswith("app."))
