@@ -18,9 +18,10 @@ from hypothesis import strategies as st
 from app.kinematics import ik
 from app.kinematics.analytic_ik.planar2 import into_limits, planar2_geometry, planar2_solutions
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions, IKProblem
-from app.kinematics.ik.search import DISTINCT, Search
+from app.kinematics.ik.search import Search
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
 from tests.kinematics.reference import (
@@ -97,7 +98,9 @@ def test_several_distinct_solutions_sorted_by_seed_distance(registry) -> None:
     assert dists == sorted(dists)
     for a in range(len(res.solutions)):
         for b in range(a):
-            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > DISTINCT
+            assert (
+                np.abs(res.solutions[a].q - res.solutions[b].q).max() > DEFAULT_PARAMETERS.distinct
+            )
         dp, dr = pose_error(reference_pose(robot, res.solutions[a].q, "tool0"), target)
         assert dp <= TOL and dr <= TOL
 

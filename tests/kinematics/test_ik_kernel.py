@@ -1,4 +1,4 @@
-"""The compiled IK loop (app.kinematics.ik_kernel) against independent references: its
+"""The compiled IK loop (app.kinematics.ik.kernel) against independent references: its
 kinematics against Pinocchio, its rotation log against Pinocchio's and exp3, its table
 distances against NumPy, and the solver's answers on both loops against yourdfpy."""
 
@@ -10,9 +10,10 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
-from app.kinematics import ik, ik_kernel
+from app.kinematics import ik, jit
 from app.kinematics.analytic_ik import planar2, ur
 from app.kinematics.fk import forward_kinematics
+from app.kinematics.ik import kernel as ik_kernel
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.jacobian import frame_jacobian
@@ -22,7 +23,7 @@ from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose
 
 
 def test_numba_is_used() -> None:
-    assert ik_kernel.available()
+    assert jit.available()
 
 
 @pytest.mark.parametrize(
@@ -192,17 +193,17 @@ def test_compiled_ur_closed_form_equals_the_python_one(registry, robot_id, frame
 
 def test_jit_without_a_writable_cache_still_compiles(monkeypatch) -> None:
     """Numba refuses cache=True when it finds no writable cache location: compile anyway."""
-    real = ik_kernel.numba.njit
+    real = jit.numba.njit
 
     def njit(**kw):
         if kw.get("cache"):
             raise RuntimeError("cannot cache function 'f': no locator available for file 'x'")
         return real(**kw)
 
-    monkeypatch.setattr(ik_kernel.numba, "njit", njit)
+    monkeypatch.setattr(jit.numba, "njit", njit)
 
     def add_one(x):
         return x + 1.0
 
-    compiled = ik_kernel.jit(add_one)
+    compiled = jit.jit(add_one)
     assert compiled(1.0) == 2.0 and compiled.signatures  # a Numba dispatcher, compiled

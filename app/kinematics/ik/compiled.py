@@ -17,8 +17,9 @@ from typing import TYPE_CHECKING
 
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik import search_kernel
+from app.kinematics.ik.boundary import ITERATIONS, RESTARTS, new_state
 from app.kinematics.ik.kernel import CAPPED, CONVERGED
-from app.kinematics.ik.search_kernel import ITERATIONS, JUMP, RESTARTS
+from app.kinematics.ik.search_kernel import JUMP
 
 if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
@@ -36,9 +37,7 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     H = s.target.homogeneous
     tol_p2, tol_r2 = s.tol_p**2, s.tol_r**2
     best0 = s.best_energy
-    state = search_kernel.new_state(
-        s.q_seed[ch.active], best0, s.parameters.nearest, consts.table.shape[0]
-    )
+    state = new_state(s.q_seed[ch.active], best0, s.parameters.nearest, consts.table.shape[0])
     st, qa = state.counters, state.qa
     st[ITERATIONS], st[RESTARTS] = s.iterations, s.restarts
     cap = max_iterations if max_iterations is not None else 1 << 62

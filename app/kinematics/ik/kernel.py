@@ -35,64 +35,15 @@ Numba compiles on first use (a few seconds) and caches the machine code next to 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
 from app.kinematics.chain import SerialChain
+from app.kinematics.ik.boundary import ChainConstants, StepParameters
 from app.kinematics.jit import jit
-
-if TYPE_CHECKING:
-    from app.kinematics.ik.parameters import SolverParameters
-
-__all__ = ["CAPPED", "CONVERGED", "RESTART", "ChainConstants", "StepParameters", "attempt"]
 
 #: Attempt outcomes returned by :func:`attempt`.
 CONVERGED, RESTART, CAPPED = 0, 1, 2
-
-
-class ChainConstants(NamedTuple):
-    """What the kernels read of one (robot, frame) chain of k 1-DoF joints (root frame, m).
-
-    ``C`` (k, 3, 3), ``t`` (k, 3): each joint's fixed placement in its parent (the joint
-    axis is the local z); ``prism`` (k,): prismatic (else revolute or continuous);
-    ``last_C`` (3, 3), ``last_t`` (3,): the frame's placement in the last joint;
-    ``lo``, ``hi`` (k,): the limits every iterate is clipped to (±inf: none); ``cont``
-    (k,): continuous joints (wrapped to (−π, π]).
-    """
-
-    C: np.ndarray
-    t: np.ndarray
-    prism: np.ndarray
-    last_C: np.ndarray
-    last_t: np.ndarray
-    lo: np.ndarray
-    hi: np.ndarray
-    cont: np.ndarray
-
-
-class StepParameters(NamedTuple):
-    """The loop's tunables as the kernels read them
-    (:class:`~app.kinematics.ik.parameters.SolverParameters`, :func:`step_parameters`)."""
-
-    damp: float
-    mu: float
-    gain: float
-    null_scale: float  # 1 / null_energy
-    null_floor: float
-    max_step: float
-    progress: float
-    stall: int
-    attempt_cap: int
-
-
-def step_parameters(p: SolverParameters, attempt_cap: int | None = None) -> StepParameters:
-    """The kernels' view of ``p`` (``attempt_cap`` overrides ``p.attempt_cap``)."""
-    return StepParameters(
-        float(p.damp), float(p.mu), float(p.null_gain), 1.0 / p.null_energy,
-        float(p.null_floor), float(p.max_step), float(p.progress), int(p.stall),
-        int(p.attempt_cap if attempt_cap is None else attempt_cap),
-    )  # fmt: skip
 
 
 @jit

@@ -23,8 +23,9 @@ import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group
-from app.kinematics.ik import kernel, search_kernel
-from app.kinematics.ik.kernel import ChainConstants, CompiledChain, step_parameters
+from app.kinematics.ik import kernel
+from app.kinematics.ik.boundary import ChainConstants, SearchConstants, step_parameters
+from app.kinematics.ik.kernel import CompiledChain
 from app.kinematics.ik.parameters import DEFAULT_PARAMETERS, SolverParameters
 from app.kinematics.jit import available
 from app.kinematics.lazy import LazyKey
@@ -140,7 +141,7 @@ class IKChain:
         return None if cc is None else cc.constants(self.clip_lo, self.clip_hi, self.cont_mask)
 
     @cached_property
-    def search_constants(self) -> search_kernel.SearchConstants | None:
+    def search_constants(self) -> SearchConstants | None:
         """What :func:`.search_kernel.search` reads of this chain, or None (no
         :attr:`compiled`)."""
         chain = self.chain_constants
@@ -150,7 +151,7 @@ class IKChain:
         redundant = self.k > 6
         M, W2, _ = self.poses
         tab32 = np.ascontiguousarray(np.vstack((M.T, W2[None])), dtype=np.float32)
-        return search_kernel.SearchConstants(
+        return SearchConstants(
             chain, step_parameters(p), float(p.nearest_ratio), float(p.rot_weight),
             bool(redundant and p.null_gain > 0.0), bool(p.clamp and redundant),
             bool(p.nearest_first), tab32, self.restart_table,

@@ -31,71 +31,27 @@ the iterate, the best iterate, the table distances, the nearest samples and the
 
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
 from app.kinematics.ik import kernel
-from app.kinematics.ik.kernel import CAPPED, CONVERGED, ChainConstants, StepParameters, jit
+from app.kinematics.ik.boundary import (
+    DISTANCES_KNOWN,
+    ITERATIONS,
+    N_NEAR,
+    NEAREST_ONE,
+    PHASE,
+    RANKED,
+    RESTARTS,
+    ChainConstants,
+    SearchConstants,
+    StepParameters,
+    new_state,
+)
+from app.kinematics.ik.kernel import CAPPED, CONVERGED
+from app.kinematics.jit import jit
 
 #: Outcomes of :func:`search` besides ``CONVERGED`` and ``CAPPED`` (:mod:`.kernel`).
 PAUSED, JUMP = 3, 4
-#: The search's counters, in order, in ``SearchState.counters`` (int64): Jacobian
-#: evaluations so far; restarts taken; phase (0: the seed not checked yet, 1: a restart is
-#: due, 2: ``qa`` starts the next attempt); whether the table distances are known; index of
-#: the nearest table sample; whether the nearest samples are ranked; how many are.
-COUNTERS = ("iterations", "restarts", "phase", "distances_known", "nearest_one", "ranked", "n_near")
-ITERATIONS, RESTARTS, PHASE, DISTANCES_KNOWN, NEAREST_ONE, RANKED, N_NEAR = range(len(COUNTERS))
-
-
-class SearchConstants(NamedTuple):
-    """What :func:`search` reads of a chain and the parameters, built once with the chain.
-
-    ``nearest_ratio``, ``rot_weight``: :class:`~app.kinematics.ik.parameters.SolverParameters`'
-    fields; ``null_on``: the null-space pull on the attempt from the seed (redundant chains);
-    ``clamp``: lock joints pushed against a limit (redundant chains); ``nearest_first``: the
-    jump from a far seed; ``tab32`` (13, N) float32: the restart table's poses
-    (−2·[p | c·vec(R)] transposed, then ‖p‖² + 3c); ``table`` (N, k): its configurations.
-    """
-
-    chain: ChainConstants
-    step: StepParameters
-    nearest_ratio: float
-    rot_weight: float
-    null_on: bool
-    clamp: bool
-    nearest_first: bool
-    tab32: np.ndarray
-    table: np.ndarray
-
-
-class SearchState(NamedTuple):
-    """One query's arrays, updated in place by :func:`search` (see :func:`new_state`).
-
-    ``qa`` (k,): the current start or, on ``CONVERGED``, the converged iterate; ``q_ref``
-    (k,): the seed (the null-space reference); ``best_q`` (k,), ``best`` (1,): the
-    lowest-energy unconverged iterate and its energy ‖e‖²; ``d`` (N,) float32: the table
-    distances; ``near`` (nearest,) int64: the nearest samples; ``counters``: :data:`COUNTERS`.
-    """
-
-    qa: np.ndarray
-    q_ref: np.ndarray
-    best_q: np.ndarray
-    best: np.ndarray
-    d: np.ndarray
-    near: np.ndarray
-    counters: np.ndarray
-
-
-def new_state(qa: np.ndarray, best: float, nearest: int, n_table: int) -> SearchState:
-    """A fresh state starting from ``qa`` (copied), ``best`` the best energy so far."""
-    qa = np.ascontiguousarray(qa, dtype=np.float64).copy()
-    counters = np.zeros(len(COUNTERS), dtype=np.int64)
-    counters[N_NEAR] = min(nearest, n_table)
-    return SearchState(
-        qa, qa.copy(), qa.copy(), np.array([best]), np.empty(n_table, dtype=np.float32),
-        np.zeros(int(counters[N_NEAR]), dtype=np.int64), counters,
-    )  # fmt: skip
 
 
 @jit

@@ -22,9 +22,10 @@ from __future__ import annotations
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics import jit
 from app.kinematics.fk import frame_pose
 from app.kinematics.ik import kernel
-from app.kinematics.ik.kernel import step_parameters
+from app.kinematics.ik.boundary import step_parameters
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
 from app.kinematics.models import RobotModel
@@ -60,7 +61,7 @@ class LocalSolver:
         self.robot, self.ch = robot, chain
         cc = chain.compiled
         #: Whether the local attempt applies (full pose, compiled chain).
-        self.available = bool(task.full_pose and cc is not None and kernel.available())
+        self.available = bool(task.full_pose and cc is not None and jit.available())
         cap = LOCAL_ITERATIONS if max_iterations is None else min(max_iterations, LOCAL_ITERATIONS)
         self.cap = cap
         if not self.available:
