@@ -72,6 +72,7 @@ def step_parameters(p: SolverParameters, attempt_cap: int | None = None) -> Step
 #: the nearest table sample; whether the nearest samples are ranked; how many are.
 COUNTERS = ("iterations", "restarts", "phase", "distances_known", "nearest_one", "ranked", "n_near")
 ITERATIONS, RESTARTS, PHASE, DISTANCES_KNOWN, NEAREST_ONE, RANKED, N_NEAR = range(len(COUNTERS))
+_COUNTERS0 = np.zeros(len(COUNTERS), dtype=np.int64)
 
 
 class SearchConstants(NamedTuple):
@@ -113,12 +114,13 @@ class SearchState(NamedTuple):
     counters: np.ndarray
 
 
-def new_state(qa: np.ndarray, best: float, nearest: int, n_table: int) -> SearchState:
-    """A fresh state starting from ``qa`` (copied), ``best`` the best energy so far."""
-    qa = np.ascontiguousarray(qa, dtype=np.float64).copy()
-    counters = np.zeros(len(COUNTERS), dtype=np.int64)
-    counters[N_NEAR] = min(nearest, n_table)
+def new_state(qa: np.ndarray, best: float, n_near: int, n_table: int) -> SearchState:
+    """A fresh state starting from ``qa`` ((k,) float64, C-contiguous: taken, not copied),
+    ``best`` the best energy so far, ``n_near`` nearest samples to rank (at most the table's
+    ``n_table`` samples)."""
+    counters = _COUNTERS0.copy()
+    counters[N_NEAR] = n_near
     return SearchState(
         qa, qa.copy(), qa.copy(), np.array([best]), np.empty(n_table, dtype=np.float32),
-        np.zeros(int(counters[N_NEAR]), dtype=np.int64), counters,
+        np.empty(n_near, dtype=np.int64), counters,
     )  # fmt: skip

@@ -15,11 +15,14 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik import search_kernel
 from app.kinematics.ik.boundary import ITERATIONS, RESTARTS, new_state
 from app.kinematics.ik.kernel import CAPPED, CONVERGED
 from app.kinematics.ik.search_kernel import JUMP
+from app.kinematics.jit import direct
 
 if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
@@ -34,17 +37,19 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     ch, clock = s.ch, s.clock
     consts = ch.search_constants
     chunk_attempts = s.parameters.chunk_attempts
-    H = s.target.homogeneous
+    H = np.ascontiguousarray(s.target.homogeneous, dtype=np.float64)
     tol_p2, tol_r2 = s.tol_p**2, s.tol_r**2
     best0 = s.best_energy
-    state = new_state(s.q_seed[ch.active], best0, s.parameters.nearest, consts.table.shape[0])
+    n_table = consts.table.shape[0]
+    qa = s.q_seed[ch.active]  # a fresh float64 array (fancy indexing copies)
+    state = new_state(qa, best0, min(s.parameters.nearest, n_table), n_table)
     st, qa = state.counters, state.qa
     st[ITERATIONS], st[RESTARTS] = s.iterations, s.restarts
     cap = max_iterations if max_iterations is not None else 1 << 62
     table_restarts = s.rng is None
-    search = search_kernel.search
     # the seed check only (as the Python loop) when the budget is already spent
     chunk = 0 if clock() >= deadline else chunk_attempts
+    search = direct(search_kernel.search, state, consts, H, tol_p2, tol_r2, cap, chunk, True)
     try:
         while True:
             outcome = search(state, consts, H, tol_p2, tol_r2, cap, chunk, table_restarts)

@@ -15,7 +15,7 @@ Not to be confused with :mod:`app.kinematics.chain`, the vectorised serial-chain
 from __future__ import annotations
 
 import math
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
@@ -233,7 +233,20 @@ def chain_key(
     frame: str, group: Group | None = None, parameters: SolverParameters = DEFAULT_PARAMETERS
 ) -> LazyKey[IKChain]:
     """The model's lazy-cache key of the :class:`IKChain` of ``frame`` (and ``group``)."""
-    name = f"ik.chain:{frame}" if group is None else f"ik.chain:{frame}|group:{group.name}"
+    name = None if group is None else group.name
+    if parameters is DEFAULT_PARAMETERS:
+        return _default_chain_key(frame, name)
+    return _chain_key(frame, name, parameters)
+
+
+@lru_cache(maxsize=1024)
+def _default_chain_key(frame: str, group: str | None) -> LazyKey[IKChain]:
+    return _chain_key(frame, group, DEFAULT_PARAMETERS)
+
+
+@lru_cache(maxsize=1024)
+def _chain_key(frame: str, group: str | None, parameters: SolverParameters) -> LazyKey[IKChain]:
+    name = f"ik.chain:{frame}" if group is None else f"ik.chain:{frame}|group:{group}"
     if parameters != DEFAULT_PARAMETERS:
         name += f"|{parameters!r}"
     return LazyKey(name, IKChain)

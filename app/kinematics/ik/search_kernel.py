@@ -173,5 +173,5 @@ def warm_up() -> None:
     step = StepParameters(0.01, 1e-10, 0.2, 100.0, 1e-8, 2.0, 0.81, 2, 20)
     tab32 = np.zeros((13, 4), dtype=np.float32)
     consts = SearchConstants(chain, step, 0.5, 0.2, True, True, True, tab32, np.zeros((4, 1)))
-    state = new_state(z, np.inf, 4, 4)
+    state = new_state(z.copy(), np.inf, 4, 4)
     search(state, consts, np.eye(4), 1e-10, 1e-10, 1, 1, True)

@@ -92,11 +92,14 @@ class LocalSolver:
         q_ref = qa.copy()
         self._best[0] = np.inf
         null_on, clamp = self._flags
-        outcome, n = kernel.attempt(
+        args = (
             qa, self._chain,
-            np.ascontiguousarray(target.rotation), np.ascontiguousarray(target.translation),
-            q_ref, null_on, clamp, *self._tol2, self.cap, self._step, self._best, self._best_q,
+            np.ascontiguousarray(target.rotation, dtype=np.float64),
+            np.ascontiguousarray(target.translation, dtype=np.float64),
+            q_ref, bool(null_on), bool(clamp), *self._tol2, int(self.cap), self._step,
+            self._best, self._best_q,
         )  # fmt: skip
+        outcome, n = jit.direct(kernel.attempt, *args)(*args)
         if outcome != kernel.CONVERGED:
             return None, int(n)
         q = q_prev.copy()
