@@ -39,6 +39,7 @@ _EYES = [np.eye(i) for i in range(7)]
 _jacobians, _placement, _log3 = pin.computeJointJacobians, pin.updateFramePlacement, pin.log3
 _LWA = pin.LOCAL_WORLD_ALIGNED
 _inner, _dot, _minimum, _maximum = np.inner, np.dot, np.minimum, np.maximum
+_isfinite = np.isfinite
 
 
 def _frame_jacobian_6xn(
@@ -184,12 +185,12 @@ def spd_solve(A: np.ndarray, b: np.ndarray) -> np.ndarray:
     """x = A⁻¹ b for the damped Gram matrix A = J Jᵀ + λ² I (m, m), by LAPACK ``posv``.
 
     A is positive definite in exact arithmetic (λ² ≥ μ > 0); when ``posv`` reports that it
-    is not in floating point (``info`` ≠ 0: a non-positive pivot, rounding on a huge robot,
-    a NaN), the more damped system (A + 2‖A‖_F·I) x = b is solved instead (positive definite
+    is not in floating point (``info`` ≠ 0: a non-positive pivot, rounding on a huge robot;
+    or a non-finite solution: a NaN entry), the more damped system (A + 2‖A‖_F·I) x = b is solved instead (positive definite
     whatever A), and x = 0 (no step) if that fails too: never a NaN or garbage step.
     """
     _, x, info = _posv(A, b)
-    if info == 0:
+    if info == 0 and _isfinite(x).all():  # (posv reports no error for NaN entries)
         return x
     extra = 2.0 * float(np.linalg.norm(A))
     if math.isfinite(extra):
