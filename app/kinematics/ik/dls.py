@@ -186,8 +186,9 @@ def spd_solve(A: np.ndarray, b: np.ndarray) -> np.ndarray:
 
     A is positive definite in exact arithmetic (λ² ≥ μ > 0); when ``posv`` reports that it
     is not in floating point (``info`` ≠ 0: a non-positive pivot, rounding on a huge robot;
-    or a non-finite solution: a NaN entry), the more damped system (A + 2‖A‖_F·I) x = b is solved instead (positive definite
-    whatever A), and x = 0 (no step) if that fails too: never a NaN or garbage step.
+    or a non-finite solution: a NaN entry), the more damped system (A + 2‖A‖_F·I) x = b is
+    solved instead (positive definite whatever A), and x = 0 (no step) if that fails too:
+    never a NaN or garbage step.
     """
     _, x, info = _posv(A, b)
     if info == 0 and _isfinite(x).all():  # (posv reports no error for NaN entries)
