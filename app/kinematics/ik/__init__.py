@@ -102,7 +102,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.analytic_ik import candidates
-from app.kinematics.errors import Cancelled
+from app.kinematics.errors import Cancelled, KinematicsError
 from app.kinematics.groups import default_frame, group
 from app.kinematics.ik import precompute
 from app.kinematics.ik.compiled import run_compiled
@@ -259,9 +259,13 @@ def chain_ready(
 ) -> bool:
     """Whether the chain :func:`solve` needs for ``options`` is built already: else the first
     query builds it (the restart table's poses, tens of ms), and a caller on an event loop
-    runs that query elsewhere. Raises as :func:`solve` does for a bad frame or group."""
-    grp = group(robot, options.group)
-    frame = frame_name(robot, default_frame(robot, grp, options.frame))
+    runs that query elsewhere. False for a bad frame or group too (:func:`solve` raises the
+    error, wherever it runs)."""
+    try:
+        grp = group(robot, options.group)
+        frame = frame_name(robot, default_frame(robot, grp, options.frame))
+    except KinematicsError:
+        return False
     return precompute.chain_ready(robot, frame, grp, parameters)
 
 
