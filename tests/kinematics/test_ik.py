@@ -369,10 +369,44 @@ def test_accept_predicate_rejects_solutions(registry) -> None:
     assert calls and res.success and res.q[2] < 0.0
     dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
     assert dp <= TOL and dr <= TOL
+    # every solution refused: the search ends when its budget does (a fake clock, 1 ms a read)
     never = ik.solve(
-        robot, target, IKOptions(frame="tool0", timeout_ms=10.0), accept=lambda q: False
+        robot,
+        target,
+        IKOptions(frame="tool0", timeout_ms=10.0),
+        accept=lambda q: False,
+        clock=_ticking(1e-3),
     )
     assert not never.success and never.solutions == []
+    assert never.status == "timeout"
+
+
+def _ticking(step: float):
+    """A fake clock (s) advancing by ``step`` at each read."""
+    reads = [0]
+
+    def clock() -> float:
+        reads[0] += 1
+        return reads[0] * step
+
+    return clock
+
+
+@pytest.mark.parametrize("mode", ["pose", "position"])  # the compiled loop, the Python loop
+def test_budget_exhausted_by_a_fake_clock_reports_timeout(registry, mode: str) -> None:
+    """A reachable target, tolerances no iterate meets, a clock advancing 1 ms per read and
+    a 10 ms budget: ``timeout`` after a bounded number of reads, whatever the machine's load
+    (real time plays no part)."""
+    robot = registry.get("panda")
+    target = se3(reference_pose(robot, np.array(PANDA_Q), "panda_link8"))
+    options = IKOptions(
+        frame="panda_link8", mode=mode, tolerance=(1e-300, 1e-300), timeout_ms=10.0,
+        analytic=False,
+    )  # fmt: skip
+    res = ik.solve(robot, target, options, clock=_ticking(1e-3))
+    assert not res.success and res.status == "timeout"
+    assert res.solve_time_ms >= 10.0  # measured on the fake clock: past the budget
+    assert 0 < res.iterations <= 10 * 4 * DEFAULT_PARAMETERS.attempt_cap
 
 
 PANDA_Q = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5, 0.03]
