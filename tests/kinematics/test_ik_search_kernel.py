@@ -7,6 +7,7 @@ read between chunks of attempts from a clock the tests control."""
 from __future__ import annotations
 
 import threading
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -15,9 +16,7 @@ from app.kinematics import ik, jit
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik import kernel, search_kernel
 from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
-from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
-from app.kinematics.models import RobotModel
 from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
 
 pytestmark = pytest.mark.skipif(not jit.available(), reason="Numba not installed")
@@ -29,12 +28,8 @@ NO_DEADLINE_MS = 60_000
 UNMET = (1e-300, 1e-300)
 
 
-def _python_twin(robot: RobotModel, frame: str) -> RobotModel:
-    """The same robot, solved by the Python loop (no compiled chain)."""
-    twin = RobotModel(robot.id, robot.urdf_text, package_dirs=robot.package_dirs,
-                      srdf_text=robot.srdf_text, ee_frame=robot.ee_frame)  # fmt: skip
-    ik_chain(twin, frame).compiled = None
-    return twin
+#: The same solver on the Python loop only.
+PYTHON_LOOP = replace(DEFAULT_PARAMETERS, compiled=False)
 
 
 @pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
@@ -91,7 +86,6 @@ def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) ->
     as the Python loop: same counts, same solutions."""
     robot = registry.get("panda")
     frame = "panda_link8"
-    twin = _python_twin(robot, frame)
     options = IKOptions(
         frame=frame,
         timeout_ms=NO_DEADLINE_MS,
@@ -107,7 +101,7 @@ def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) ->
         if case == "random_restarts":  # mostly out of reach (within the reach bound)
             target.translation = target.translation * 1.4
         answers = []
-        for r in (robot, twin):
+        for parameters in (DEFAULT_PARAMETERS, PYTHON_LOOP):
             seen: list[int] = []
 
             def accept(q: np.ndarray, seen: list[int] = seen) -> bool:
@@ -119,7 +113,7 @@ def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) ->
                 kwargs["accept"] = accept
             if case == "random_restarts":
                 kwargs["rng"] = np.random.default_rng(5)
-            answers.append(ik.solve(r, target, options, **kwargs))
+            answers.append(ik.solve(robot, target, options, parameters=parameters, **kwargs))
         a, b = answers
         assert (a.success, a.status, a.iterations, a.restarts) == (
             b.success, b.status, b.iterations, b.restarts,

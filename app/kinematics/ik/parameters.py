@@ -66,6 +66,10 @@ class SolverParameters:
     nearest_ratio
         The loops jump from the seed to the nearest table sample at once when that sample's
         pose distance to the target is below this fraction of the seed's.
+    compiled
+        Run the compiled loop (:mod:`.kernel`, :mod:`.search_kernel`) where it applies (full
+        pose, a serial chain of 1-DoF joints, Numba installed); False: the Python loop
+        (:mod:`.dls`) always, which takes the same iterates (for comparisons).
     chunk_attempts
         Attempts (each at most ``attempt_cap`` iterations, a few tens of µs) per compiled
         call, between two reads of the clock and the cancel flag: the deadline is overrun by
@@ -90,6 +94,7 @@ class SolverParameters:
     nearest: int = 32
     nearest_ratio: float = 0.5
     chunk_attempts: int = 4
+    compiled: bool = True
 
 
 #: The parameters every endpoint uses.

@@ -130,7 +130,7 @@ class IKChain:
     def compiled(self) -> CompiledChain | None:
         """The compiled loop's kinematic constants (:mod:`.kernel`), or None: the Python
         loop (not a plain serial chain of 1-DoF joints, or no Numba)."""
-        if not available():
+        if not (available() and self.parameters.compiled):
             return None
         return CompiledChain.build(self._robot, self.frame, self.active)
 
