@@ -41,7 +41,7 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     tol_p2, tol_r2 = s.tol_p**2, s.tol_r**2
     best0 = s.best_energy
     n_table = consts.table.shape[0]
-    qa = s.q_seed[ch.active]  # a fresh float64 array (fancy indexing copies)
+    qa = np.ascontiguousarray(s.q_seed[ch.active], dtype=np.float64)  # a fresh copy
     state = new_state(qa, best0, min(s.parameters.nearest, n_table), n_table)
     st, qa = state.counters, state.qa
     st[ITERATIONS], st[RESTARTS] = s.iterations, s.restarts

@@ -179,10 +179,6 @@ class IKChain:
 
         return reach_parts_of(self._robot, self)
 
-    def sample_poses(self) -> tuple[np.ndarray, np.ndarray]:
-        """(M, W2) of :attr:`poses`."""
-        return self.poses[:2]
-
     def sample_distances(self, target: pin.SE3) -> tuple[np.ndarray, float]:
         """Pose distances of the table samples to ``target``, up to the constant K_t returned
         with them (‖p − p_t‖² + c‖R − R_t‖²_F = d_i + K_t)."""
