@@ -38,11 +38,12 @@ def test_restart_table_is_built_off_the_event_loop(client, registry, monkeypatch
 
     monkeypatch.setattr(precompute, "table_poses", spy)
     body = {"target": _target(registry), "frame": "panda_link8"}  # default budget: inline
+    # (success is not asserted: a 5 ms budget on a loaded machine may run out; where the
+    # table is built is what matters)
     r = client.post("/robots/panda/ik", json=body)
     assert r.status_code == 200, r.text
-    assert r.json()["success"]
     assert calls == [False]  # built once, in the pool
-    assert client.post("/robots/panda/ik", json=body).json()["success"]
+    assert client.post("/robots/panda/ik", json=body).status_code == 200
     assert calls == [False]  # cached
 
 
