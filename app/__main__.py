@@ -118,15 +118,15 @@ def warm_up(require_cache: bool) -> int:
     import os
     import time
 
-    from app.kinematics.ik import compiled
+    from app.kinematics.ik import warmup
 
     start = time.perf_counter()
-    compiled.warm_up()
-    stats = compiled.kernel_cache_stats()
+    warmup.warm_up()
+    stats = warmup.kernel_cache_stats()
     report = {
         **stats,
         "seconds": round(time.perf_counter() - start, 3),
-        "module": compiled.__file__,
+        "module": warmup.__file__,
         "numba_cache_dir": os.environ.get("NUMBA_CACHE_DIR"),
     }
     print(json.dumps(report))

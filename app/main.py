@@ -30,7 +30,7 @@ from starlette.middleware.cors import CORSMiddleware
 
 from app.api import errors, static_files
 from app.api.routes import ROUTERS, docs_pages, metrics, viewer
-from app.kinematics.ik.compiled import warm_up as warm_up_ik
+from app.kinematics.ik.warmup import warm_up as warm_up_ik
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.xmldoc import XmlLimits
 from app.middleware import openapi

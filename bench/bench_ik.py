@@ -29,12 +29,14 @@ import math
 import os
 import sys
 import time
+from dataclasses import replace
 
 import httpx
 import numpy as np
 import pinocchio as pin
 
 from app.kinematics import ik
+from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.models import RobotModel
@@ -45,6 +47,8 @@ from bench.rtb_side import IkLM
 
 TOL = 1e-5
 BUDGET_MS = 5.0
+#: The same solver on its Python loop only.
+PYTHON_LOOP = replace(DEFAULT_PARAMETERS, compiled=False)
 
 
 def _chains(reg: Registry) -> list[tuple[str, str]]:
@@ -152,25 +156,20 @@ def loops_side_by_side(reg: Registry, n: int) -> list[tuple]:
     solve rate and mean / p50 thread CPU time (ms), and mean iterations."""
     rows = []
     for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0"), ("puma560", None)):
-        compiled = reg.get(rid)
-        frame = frame or compiled.ee_frame
-        python = RobotModel(
-            compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
-            srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame,
-        )  # fmt: skip
-        if ik_chain(compiled, frame).compiled is None:
+        robot = reg.get(rid)
+        frame = frame or robot.ee_frame
+        if ik_chain(robot, frame).compiled is None:
             continue
-        ik_chain(python, frame).compiled = None
-        goals = targets(compiled, frame, n, seed=11)
+        loops = (("compiled", DEFAULT_PARAMETERS), ("python", PYTHON_LOOP))
+        goals = targets(robot, frame, n, seed=11)
         cpu = {"compiled": np.empty(n), "python": np.empty(n)}
         ok = {"compiled": 0, "python": 0}
         its = {"compiled": 0, "python": 0}
         for i, T in enumerate(goals):
-            for name, robot in (("compiled", compiled), ("python", python)):
+            for name, parameters in loops:
                 c0 = time.thread_time()
-                res = ik.solve(
-                    robot, T, IKOptions(frame=frame, timeout_ms=20 * BUDGET_MS, analytic=False)
-                )
+                options = IKOptions(frame=frame, timeout_ms=20 * BUDGET_MS, analytic=False)
+                res = ik.solve(robot, T, options, parameters=parameters)
                 cpu[name][i] = time.thread_time() - c0
                 ok[name] += res.success and cpu[name][i] <= BUDGET_MS * 1e-3
                 its[name] += res.iterations

@@ -2,7 +2,7 @@
 
 The one implementation used by batch FK (:func:`app.kinematics.fk.forward_kinematics_batch`),
 reachability maps (:mod:`app.kinematics.reachability`) and the compiled IK kernels
-(:class:`app.kinematics.ik_kernel.CompiledChain` reads its constants).
+(:class:`app.kinematics.ik.kernel.CompiledChain` reads its constants).
 
 Each joint of the frame's chain is rewritten in a frame whose z axis is the joint axis
 (rot(axis, θ) = A·Rz(θ)·Aᵀ, the constants folded into the fixed placements): joint j applies

@@ -60,6 +60,7 @@ import pinocchio as pin
 
 from app.kinematics.collision_pairs import LinkPair, checked_link_pairs
 from app.kinematics.errors import Cancelled, InvalidInputError
+from app.kinematics.lazy import LazyKey
 from app.kinematics.meshes import collision_geometry
 from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
@@ -384,6 +385,16 @@ class CollisionModel:
         return out
 
 
+def collision_key(mode: str) -> LazyKey[CollisionModel]:
+    """The model's lazy-cache key of its collision model in ``mode``."""
+    return LazyKey(f"collision.{mode}", CollisionModel)
+
+
+def collision_model_built(robot: RobotModel, mode: str) -> bool:
+    """Whether the collision model in ``mode`` is built already (nothing is built)."""
+    return robot.cached(collision_key(mode)) is not None
+
+
 def collision_model(robot: RobotModel, mode: str = "mesh") -> CollisionModel:
     """The robot's collision model in ``mode`` (built once per robot, then cached)."""
     if mode not in GEOMETRY_MODES:
@@ -391,7 +402,7 @@ def collision_model(robot: RobotModel, mode: str = "mesh") -> CollisionModel:
             f"unknown geometry mode {mode!r}; expected one of {', '.join(GEOMETRY_MODES)}",
             "geometry",
         )
-    return robot.lazy(f"collision.{mode}", lambda r: CollisionModel(r, mode))
+    return robot.lazy(collision_key(mode), lambda r: CollisionModel(r, mode))
 
 
 def collision_filter(

@@ -25,10 +25,13 @@ from collections.abc import Iterable
 
 import pinocchio as pin
 
+from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
 from app.kinematics.xmldoc import TRUSTED, parse_literal_xml
 
 LinkPair = tuple[str, str]
+#: The model's lazy-cache key of its checked link pairs (:func:`link_pairs`).
+LINK_PAIRS_KEY: LazyKey[list] = LazyKey("collision.link_pairs", list)
 
 
 def srdf_disabled_pairs(srdf_text: str | None, links: Iterable[str]) -> set[frozenset[str]]:
@@ -140,4 +143,4 @@ def collision_link_pairs(robot: RobotModel) -> list[LinkPair]:
     Same rules and result as :attr:`CollisionModel.link_pairs`, derived from the URDF's
     ``<collision>`` elements; cached per robot.
     """
-    return robot.lazy("collision.link_pairs", lambda r: checked_link_pairs(r, collision_links(r)))
+    return robot.lazy(LINK_PAIRS_KEY, lambda r: checked_link_pairs(r, collision_links(r)))

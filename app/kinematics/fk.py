@@ -12,6 +12,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.chain import SerialChain
+from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import matrix_to_quaternion
 
@@ -51,8 +52,10 @@ def forward_kinematics_batch(
     """
     fid = robot.frame_id(frame)
     qs = np.asarray(qs, dtype=float)
-    chain = robot.lazy(f"serial_chain:{fid}", lambda r: SerialChain.build(r, frame) or False)
-    if chain:
+    chain = robot.lazy(
+        LazyKey(f"serial_chain:{fid}", SerialChain), lambda r: SerialChain.build(r, frame)
+    )
+    if chain is not None:
         rotations, positions = chain.pose(qs[:, chain.wire])
         return positions, matrix_to_quaternion(rotations)
     model, data = robot.model, robot.data

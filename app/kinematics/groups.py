@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel, check_joint_value, check_joint_values
 from app.kinematics.semantics import NamedState, resolve, usable_states
 
@@ -57,9 +58,14 @@ class Group:
         return len(self.joints)
 
 
+#: The model's lazy-cache keys of its groups and named states.
+GROUPS_KEY: LazyKey[dict] = LazyKey("groups", dict)
+STATES_KEY: LazyKey[tuple] = LazyKey("groups.states", tuple)
+
+
 def robot_groups(robot: RobotModel) -> dict[str, Group]:
     """The robot's groups by name, in SRDF order (built once per model)."""
-    return robot.lazy("groups", _build_groups)
+    return robot.lazy(GROUPS_KEY, _build_groups)
 
 
 def _build_groups(robot: RobotModel) -> dict[str, Group]:
@@ -167,7 +173,7 @@ def configuration(
 def named_states(robot: RobotModel) -> tuple[NamedState, ...]:
     """The SRDF's usable named states (``<group_state>``), in document order (a catalog
     state beyond the joint limits is left out: :func:`~app.kinematics.semantics.usable_states`)."""
-    return robot.lazy("groups.states", lambda r: usable_states(r.semantics, r.urdf_joints))
+    return robot.lazy(STATES_KEY, lambda r: usable_states(r.semantics, r.urdf_joints))
 
 
 def state_configuration(

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 import threading
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -27,6 +27,7 @@ import pinocchio as pin
 
 from app.kinematics.angles import wrap_angle
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.lazy import MISSING, LazyKey, T
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.mimic import MimicJoint, check_followers, mimic_joints, with_leaders
 from app.kinematics.semantics import parse_semantics
@@ -179,7 +180,7 @@ class RobotModel:
         self.model: pin.Model = build_model(urdf_text, root)  # mimic joints as ROS reads them
         self._local = threading.local()
         self._lock = threading.Lock()
-        self.extras: dict[str, Any] = {}  # lazily built companions (collision model, ...)
+        self._extras: dict[str, object] = {}  # lazily built companions (:meth:`lazy`)
         self.mesh_limits = MeshLimits()  # bounds on its collision meshes (the registry's)
 
         urdf_joints = urdf_joint_table(root)
@@ -455,15 +456,28 @@ class RobotModel:
             "continuous": joint.continuous,
         }
 
-    def lazy(self, key: str, build: Any) -> Any:
-        """A companion object built once per model under a lock (e.g. collision model)."""
-        value = self.extras.get(key)
-        if value is None:
+    def lazy(self, key: LazyKey[T], build: Callable[[RobotModel], T]) -> T:
+        """The companion object of ``key`` (e.g. the collision model, an IK chain), built by
+        ``build(self)`` once per model under a lock, then cached; its type is checked against
+        ``key.type`` when built (TypeError: a bug, two builders for one key)."""
+        value = self._extras.get(key.name, MISSING)
+        if value is MISSING:
             with self._lock:
-                value = self.extras.get(key)
-                if value is None:
-                    value = self.extras[key] = build(self)
-        return value
+                value = self._extras.get(key.name, MISSING)
+                if value is MISSING:
+                    value = build(self)
+                    if not (value is None or isinstance(value, key.type)):
+                        raise TypeError(
+                            f"lazy {key.name!r}: built a {type(value).__name__}, "
+                            f"expected {key.type.__name__}"
+                        )
+                    self._extras[key.name] = value
+        return value  # type: ignore[return-value]
+
+    def cached(self, key: LazyKey[T]) -> T | None:
+        """The companion object of ``key`` if built already, else None (nothing is built)."""
+        value = self._extras.get(key.name)
+        return value  # type: ignore[return-value]
 
 
 @dataclass

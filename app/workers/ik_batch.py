@@ -47,7 +47,8 @@ import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, UnavailableError
 from app.kinematics.ik.batch import BatchTask, solve_targets
-from app.kinematics.ik.compiled import warm_up
+from app.kinematics.ik.warmup import warm_up
+from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
 from app.workers.procwatch import kill_self, watch_parent
 
@@ -79,28 +80,29 @@ class RobotRecipe:
 
     @classmethod
     def of(cls, robot: RobotModel) -> RobotRecipe:
-        """The recipe of ``robot`` (computed once, kept in ``robot.extras``)."""
-        recipe = robot.extras.get("ik_batch_recipe")
-        if recipe is None:
-            h = hashlib.sha256()
-            for part in (
-                robot.urdf_text,
-                "\0".join(robot.package_dirs),
-                robot.srdf_text or "",
-                robot.ee_frame or "",
-            ):
-                h.update(part.encode())
-                h.update(b"\1")
-            recipe = cls(
-                robot.id,
-                robot.urdf_text,
-                tuple(robot.package_dirs),
-                robot.srdf_text,
-                robot.ee_frame,
-                f"{robot.id}:{h.hexdigest()}",
-            )
-            robot.extras["ik_batch_recipe"] = recipe
-        return recipe
+        """The recipe of ``robot`` (computed once, kept in the model's lazy cache)."""
+        return robot.lazy(RECIPE_KEY, cls._of)
+
+    @classmethod
+    def _of(cls, robot: RobotModel) -> RobotRecipe:
+        """The recipe of ``robot``, computed."""
+        h = hashlib.sha256()
+        for part in (
+            robot.urdf_text,
+            "\0".join(robot.package_dirs),
+            robot.srdf_text or "",
+            robot.ee_frame or "",
+        ):
+            h.update(part.encode())
+            h.update(b"\1")
+        return cls(
+            robot.id,
+            robot.urdf_text,
+            tuple(robot.package_dirs),
+            robot.srdf_text,
+            robot.ee_frame,
+            f"{robot.id}:{h.hexdigest()}",
+        )
 
     def build(self) -> RobotModel:
         return RobotModel(
@@ -110,6 +112,10 @@ class RobotRecipe:
             srdf_text=self.srdf_text,
             ee_frame=self.ee_frame,
         )
+
+
+#: The model's lazy-cache key of its batch recipe (:meth:`RobotRecipe.of`).
+RECIPE_KEY: LazyKey[RobotRecipe] = LazyKey("ik_batch_recipe", RobotRecipe)
 
 
 #: A worker's robots by recipe key (a replaced robot gets a new key; few robots are used).

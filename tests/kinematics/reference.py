@@ -10,6 +10,7 @@ import numpy as np
 import pinocchio as pin
 import yourdfpy
 
+from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
 
 #: Position (m) and angle (rad) tolerance of an IK solution checked against a reference.
@@ -18,7 +19,7 @@ TOL = 1e-5
 
 def _urdf(robot: RobotModel) -> yourdfpy.URDF:
     return robot.lazy(
-        "test.yourdfpy",
+        LazyKey("test.yourdfpy", yourdfpy.URDF),
         lambda r: yourdfpy.URDF.load(
             io.BytesIO(r.urdf_text.encode()),
             load_meshes=False,
@@ -62,7 +63,9 @@ def reference_chain_pose(robot: RobotModel, q: np.ndarray, frame: str) -> np.nda
     (:func:`reference_pose` without the scene-graph update of every link: for many poses)."""
     urdf = _urdf(robot)
     T = np.eye(4)
-    for j, i in robot.lazy(f"test.yourdfpy.chain:{frame}", lambda r: _chain(r, frame)):
+    for j, i in robot.lazy(
+        LazyKey(f"test.yourdfpy.chain:{frame}", list), lambda r: _chain(r, frame)
+    ):
         T = T @ urdf._forward_kinematics_joint(j, q=None if i is None else float(q[i]))[0]
     return T
 

@@ -18,9 +18,10 @@ from hypothesis import strategies as st
 from app.kinematics import ik
 from app.kinematics.analytic_ik.planar2 import into_limits, planar2_geometry, planar2_solutions
 from app.kinematics.errors import InvalidInputError, UnknownNameError
+from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions, IKProblem
-from app.kinematics.ik.search import DISTINCT, Search
+from app.kinematics.ik.search import Search
 from app.kinematics.models import RobotModel
 from app.kinematics.rotations import quaternion_to_matrix
 from tests.kinematics.reference import (
@@ -84,20 +85,38 @@ def test_reachable_targets_are_solved(
     np.testing.assert_array_equal(res.q[still], robot.mid_range()[still])
 
 
-def test_several_distinct_solutions_sorted_by_seed_distance(registry) -> None:
+@pytest.mark.parametrize(
+    "offset",
+    [
+        np.full(6, 0.05),
+        # a seed whose L∞ and L2 orders of the solutions differ (the 3rd is nearer in L2)
+        np.array([1.07, -1.4, 0.69, -0.97, 1.09, 0.12]),
+    ],
+)
+def test_several_distinct_solutions_sorted_by_seed_distance(registry, offset) -> None:
     robot = registry.get("ur5")
     q_true = np.array([0.4, -1.1, 1.3, -0.6, 1.2, 0.3])
     target = reference_pose(robot, q_true, "tool0")
-    seed = q_true + 0.05
+    seed = q_true + offset
     res = ik.solve(
         robot, se3(target), IKOptions(frame="tool0", num_solutions=4, timeout_ms=2000), seed=seed
     )
     assert res.success and len(res.solutions) >= 2
-    dists = [np.linalg.norm(s.q - seed) for s in res.solutions]
-    assert dists == sorted(dists)
+    # The solver ranks by the largest single-joint move from the seed (L∞; continuous joints
+    # around the circle), ties broken by the Euclidean distance (ranking.py), not by L2 alone.
+    cont = np.array([j.continuous for j in robot.joints])
+    orders = []
+    for sol in res.solutions:
+        d = sol.q - seed
+        d[cont] = np.angle(np.exp(1j * d[cont]))  # around the circle, independently of the code
+        orders.append((float(np.abs(d).max()), float(np.linalg.norm(d))))
+        assert sol.seed_distance == pytest.approx(np.abs(d).max(), abs=1e-12)
+    assert orders == sorted(orders)
     for a in range(len(res.solutions)):
         for b in range(a):
-            assert np.abs(res.solutions[a].q - res.solutions[b].q).max() > DISTINCT
+            assert (
+                np.abs(res.solutions[a].q - res.solutions[b].q).max() > DEFAULT_PARAMETERS.distinct
+            )
         dp, dr = pose_error(reference_pose(robot, res.solutions[a].q, "tool0"), target)
         assert dp <= TOL and dr <= TOL
 
@@ -350,10 +369,44 @@ def test_accept_predicate_rejects_solutions(registry) -> None:
     assert calls and res.success and res.q[2] < 0.0
     dp, dr = pose_error(reference_pose(robot, res.q, "tool0"), target.homogeneous)
     assert dp <= TOL and dr <= TOL
+    # every solution refused: the search ends when its budget does (a fake clock, 1 ms a read)
     never = ik.solve(
-        robot, target, IKOptions(frame="tool0", timeout_ms=10.0), accept=lambda q: False
+        robot,
+        target,
+        IKOptions(frame="tool0", timeout_ms=10.0),
+        accept=lambda q: False,
+        clock=_ticking(1e-3),
     )
     assert not never.success and never.solutions == []
+    assert never.status == "timeout"
+
+
+def _ticking(step: float):
+    """A fake clock (s) advancing by ``step`` at each read."""
+    reads = [0]
+
+    def clock() -> float:
+        reads[0] += 1
+        return reads[0] * step
+
+    return clock
+
+
+@pytest.mark.parametrize("mode", ["pose", "position"])  # the compiled loop, the Python loop
+def test_budget_exhausted_by_a_fake_clock_reports_timeout(registry, mode: str) -> None:
+    """A reachable target, tolerances no iterate meets, a clock advancing 1 ms per read and
+    a 10 ms budget: ``timeout`` after a bounded number of reads, whatever the machine's load
+    (real time plays no part)."""
+    robot = registry.get("panda")
+    target = se3(reference_pose(robot, np.array(PANDA_Q), "panda_link8"))
+    options = IKOptions(
+        frame="panda_link8", mode=mode, tolerance=(1e-300, 1e-300), timeout_ms=10.0,
+        analytic=False,
+    )  # fmt: skip
+    res = ik.solve(robot, target, options, clock=_ticking(1e-3))
+    assert not res.success and res.status == "timeout"
+    assert res.solve_time_ms >= 10.0  # measured on the fake clock: past the budget
+    assert 0 < res.iterations <= 10 * 4 * DEFAULT_PARAMETERS.attempt_cap
 
 
 PANDA_Q = [0.3, 0.2, -0.2, -1.8, 0.1, 1.9, 0.5, 0.03]

@@ -1,18 +1,21 @@
-"""The compiled IK loop (app.kinematics.ik_kernel) against independent references: its
+"""The compiled IK loop (app.kinematics.ik.kernel) against independent references: its
 kinematics against Pinocchio, its rotation log against Pinocchio's and exp3, its table
 distances against NumPy, and the solver's answers on both loops against yourdfpy."""
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pinocchio as pin
 import pytest
 
-from app.kinematics import ik, ik_kernel
+from app.kinematics import ik, jit
 from app.kinematics.analytic_ik import planar2, ur
 from app.kinematics.fk import forward_kinematics
+from app.kinematics.ik import kernel as ik_kernel
+from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.jacobian import frame_jacobian
@@ -20,9 +23,12 @@ from app.kinematics.models import RobotModel
 from tests.kinematics.chains import continuous_arm, rrp_like
 from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
 
+#: The same solver on the Python loop only.
+PYTHON_LOOP = replace(DEFAULT_PARAMETERS, compiled=False)
+
 
 def test_numba_is_used() -> None:
-    assert ik_kernel.available()
+    assert jit.available()
 
 
 @pytest.mark.parametrize(
@@ -91,7 +97,7 @@ def test_log3_against_pinocchio_and_exp3(angle: float) -> None:
 def test_table_distances_match_numpy(registry) -> None:
     robot = registry.get("panda")
     ch = ik_chain(robot, "panda_link8")
-    M, W2 = ch.sample_poses()
+    M, W2, _ = ch.poses
     rng = np.random.default_rng(9)
     for _ in range(10):
         target = pin.SE3(pin.exp3(rng.normal(size=3)), rng.uniform(-0.5, 0.5, 3))
@@ -106,21 +112,18 @@ def test_table_distances_match_numpy(registry) -> None:
 def test_both_loops_solve_and_agree_with_yourdfpy(registry, robot_id: str) -> None:
     """The compiled and the Python loop on the same targets: every answer reaches its
     target by yourdfpy's FK and stays within the limits."""
-    compiled = registry.get(robot_id)
-    python = RobotModel(compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
-                        srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame)  # fmt: skip
-    frame = compiled.ee_frame
-    assert ik_chain(compiled, frame).compiled is not None
-    ik_chain(python, frame).compiled = None
+    robot = registry.get(robot_id)
+    frame = robot.ee_frame
+    assert ik_chain(robot, frame).compiled is not None
+    assert ik_chain(robot, frame, parameters=PYTHON_LOOP).compiled is None
     rng = np.random.default_rng(21)
     for _ in range(25):
-        q_true = random_q(compiled, rng)
-        target = reference_pose(compiled, q_true, frame)
-        for robot in (compiled, python):
-            res = ik.solve(
-                robot, se3(target), IKOptions(frame=frame, timeout_ms=500, analytic=False)
-            )
-            assert res.success, robot is python
+        q_true = random_q(robot, rng)
+        target = reference_pose(robot, q_true, frame)
+        for parameters in (DEFAULT_PARAMETERS, PYTHON_LOOP):
+            options = IKOptions(frame=frame, timeout_ms=500, analytic=False)
+            res = ik.solve(robot, se3(target), options, parameters=parameters)
+            assert res.success, parameters
             assert np.all(res.q >= robot.lower) and np.all(res.q <= robot.upper)
             dp, dr = pose_error(reference_pose(robot, res.q, frame), target)
             assert dp <= TOL and dr <= TOL
@@ -131,10 +134,7 @@ def test_compiled_and_python_loops_take_the_same_iterates(registry, robot_id, fr
     """The compiled driver repeats the Python loop step for step: from the same seeds, the
     same iteration and restart counts and the same answers (to rounding), reachable or not."""
     compiled = registry.get(robot_id)
-    python = RobotModel(compiled.id, compiled.urdf_text, package_dirs=compiled.package_dirs,
-                        srdf_text=compiled.srdf_text, ee_frame=compiled.ee_frame)  # fmt: skip
     frame = frame or compiled.ee_frame
-    ik_chain(python, frame).compiled = None
     options = IKOptions(frame=frame, timeout_ms=60_000, max_iterations=150, analytic=False)
     rng = np.random.default_rng(8)
     for k in range(12):
@@ -143,7 +143,7 @@ def test_compiled_and_python_loops_take_the_same_iterates(registry, robot_id, fr
             target.translation = target.translation * 3.0
         seed = random_q(compiled, rng)
         a = ik.solve(compiled, target, options, seed=seed)
-        b = ik.solve(python, target, options, seed=seed)
+        b = ik.solve(compiled, target, options, seed=seed, parameters=PYTHON_LOOP)
         assert (a.success, a.iterations, a.restarts) == (b.success, b.iterations, b.restarts)
         np.testing.assert_allclose(a.q, b.q, rtol=0, atol=1e-8)
 
@@ -192,17 +192,17 @@ def test_compiled_ur_closed_form_equals_the_python_one(registry, robot_id, frame
 
 def test_jit_without_a_writable_cache_still_compiles(monkeypatch) -> None:
     """Numba refuses cache=True when it finds no writable cache location: compile anyway."""
-    real = ik_kernel.numba.njit
+    real = jit.numba.njit
 
     def njit(**kw):
         if kw.get("cache"):
             raise RuntimeError("cannot cache function 'f': no locator available for file 'x'")
         return real(**kw)
 
-    monkeypatch.setattr(ik_kernel.numba, "njit", njit)
+    monkeypatch.setattr(jit.numba, "njit", njit)
 
     def add_one(x):
         return x + 1.0
 
-    compiled = ik_kernel.jit(add_one)
+    compiled = jit.jit(add_one)
     assert compiled(1.0) == 2.0 and compiled.signatures  # a Numba dispatcher, compiled

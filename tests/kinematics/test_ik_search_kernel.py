@@ -1,4 +1,4 @@
-"""The compiled whole search (app.kinematics.ik_search_kernel, driven by ik.compiled): it
+"""The compiled whole search (app.kinematics.ik.search_kernel, driven by ik.compiled): it
 cannot make the solver report a wrong answer (every converged iterate is verified by
 Pinocchio, checked here against yourdfpy), it takes the Python loop's iterates on the paths
 that resume it (rejected solutions, several solutions, random restarts), and its budget is
@@ -7,20 +7,19 @@ read between chunks of attempts from a clock the tests control."""
 from __future__ import annotations
 
 import threading
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from app.kinematics import ik, ik_kernel, ik_search_kernel
+from app.kinematics import ik, jit
 from app.kinematics.errors import Cancelled
-from app.kinematics.ik import compiled
-from app.kinematics.ik.dls import ATTEMPT_CAP
-from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik import kernel, search_kernel
+from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
 from app.kinematics.ik.problem import IKOptions
-from app.kinematics.models import RobotModel
 from tests.kinematics.reference import TOL, pose_error, random_q, reference_pose, se3
 
-pytestmark = pytest.mark.skipif(not ik_kernel.available(), reason="Numba not installed")
+pytestmark = pytest.mark.skipif(not jit.available(), reason="Numba not installed")
 
 #: A budget no machine runs out of: the iteration cap ends every search.
 NO_DEADLINE_MS = 60_000
@@ -29,12 +28,8 @@ NO_DEADLINE_MS = 60_000
 UNMET = (1e-300, 1e-300)
 
 
-def _python_twin(robot: RobotModel, frame: str) -> RobotModel:
-    """The same robot, solved by the Python loop (no compiled chain)."""
-    twin = RobotModel(robot.id, robot.urdf_text, package_dirs=robot.package_dirs,
-                      srdf_text=robot.srdf_text, ee_frame=robot.ee_frame)  # fmt: skip
-    ik_chain(twin, frame).compiled = None
-    return twin
+#: The same solver on the Python loop only.
+PYTHON_LOOP = replace(DEFAULT_PARAMETERS, compiled=False)
 
 
 @pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
@@ -45,15 +40,16 @@ def test_a_kernel_that_lies_about_convergence_is_not_believed(
     the verification refuses every one, so no success, and the best iterate reported has
     its true error (yourdfpy's FK), not the kernel's."""
     robot = registry.get(robot_id)
-    real = ik_search_kernel.search
+    real = search_kernel.search
 
-    def lying(qa, *args):
-        outcome = real(qa, *args)
-        if outcome == ik_kernel.CONVERGED:
+    def lying(state, *args):
+        outcome = real(state, *args)
+        qa = state.qa
+        if outcome == kernel.CONVERGED:
             qa[0] += 0.01 if qa[0] < 0.0 else -0.01
         return outcome
 
-    monkeypatch.setattr(ik_search_kernel, "search", lying)
+    monkeypatch.setattr(search_kernel, "search", lying)
     rng = np.random.default_rng(3)
     options = IKOptions(frame=frame, timeout_ms=NO_DEADLINE_MS, max_iterations=200, analytic=False)
     for _ in range(5):
@@ -90,7 +86,6 @@ def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) ->
     as the Python loop: same counts, same solutions."""
     robot = registry.get("panda")
     frame = "panda_link8"
-    twin = _python_twin(robot, frame)
     options = IKOptions(
         frame=frame,
         timeout_ms=NO_DEADLINE_MS,
@@ -106,7 +101,7 @@ def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) ->
         if case == "random_restarts":  # mostly out of reach (within the reach bound)
             target.translation = target.translation * 1.4
         answers = []
-        for r in (robot, twin):
+        for parameters in (DEFAULT_PARAMETERS, PYTHON_LOOP):
             seen: list[int] = []
 
             def accept(q: np.ndarray, seen: list[int] = seen) -> bool:
@@ -118,7 +113,7 @@ def test_resumed_searches_take_the_python_loops_iterates(registry, case: str) ->
                 kwargs["accept"] = accept
             if case == "random_restarts":
                 kwargs["rng"] = np.random.default_rng(5)
-            answers.append(ik.solve(r, target, options, **kwargs))
+            answers.append(ik.solve(robot, target, options, parameters=parameters, **kwargs))
         a, b = answers
         assert (a.success, a.status, a.iterations, a.restarts) == (
             b.success, b.status, b.iterations, b.restarts,
@@ -150,30 +145,29 @@ class _FakeClock:
 
 
 @pytest.mark.parametrize("reads", [0, 1, 3])
-def test_deadline_is_read_between_chunks_of_attempts(registry, monkeypatch, reads) -> None:
+def test_deadline_is_read_between_chunks_of_attempts(registry, reads) -> None:
     """A search that never converges and has no iteration cap: the search ends when the clock says
     the deadline passed, after one chunk of attempts per clock read in time."""
     robot = registry.get("panda")
-    clock = _FakeClock(reads)
-    monkeypatch.setattr(compiled, "clock", clock)
+    clock = _FakeClock(reads + 1)  # the budget's start stands still too
     target = se3(reference_pose(robot, robot.mid_range(), "panda_link8"))
     options = IKOptions(frame="panda_link8", timeout_ms=1e9, analytic=False, tolerance=UNMET)
-    res = ik.solve(robot, target, options)
+    res = ik.solve(robot, target, options, clock=clock)
     assert not res.success and res.status == "timeout"
-    # the first read before any attempt, then one read after each chunk
-    assert clock.count == max(reads, 1) + 1
-    chunk = compiled.CHUNK_ATTEMPTS
-    assert reads * chunk <= res.iterations <= 1 + reads * chunk * ATTEMPT_CAP
+    # the budget's start, the first read before any attempt, one read after each chunk,
+    # then the answer's solve time (two reads on a failure)
+    assert clock.count == 1 + max(reads, 1) + 1 + 2
+    chunk = DEFAULT_PARAMETERS.chunk_attempts
+    assert reads * chunk <= res.iterations <= 1 + reads * chunk * DEFAULT_PARAMETERS.attempt_cap
 
 
-def test_cancel_is_read_between_chunks(registry, monkeypatch) -> None:
+def test_cancel_is_read_between_chunks(registry) -> None:
     """A cancel set while the search runs stops it at the next chunk boundary."""
     robot = registry.get("panda")
     cancel = threading.Event()
-    clock = _FakeClock(2, cancel)
-    monkeypatch.setattr(compiled, "clock", clock)
+    clock = _FakeClock(3, cancel)
     target = se3(reference_pose(robot, robot.mid_range(), "panda_link8"))
     options = IKOptions(frame="panda_link8", timeout_ms=1e9, analytic=False, tolerance=UNMET)
     with pytest.raises(Cancelled):
-        ik.solve(robot, target, options, cancel=cancel)
-    assert clock.count == 3
+        ik.solve(robot, target, options, cancel=cancel, clock=clock)
+    assert clock.count == 4  # the budget's start, then three reads

@@ -1,4 +1,4 @@
-"""``ik.compiled.kernel_cache_stats`` counts every compiled kernel of the core.
+"""``ik.warmup.kernel_cache_stats`` counts every compiled kernel of the core.
 
 The container build runs ``python -m app warm-up --require-cache`` and trusts these counts to
 prove that every kernel loads from the image's Numba cache; a kernel module the count
@@ -13,10 +13,10 @@ import pkgutil
 import pytest
 
 import app.kinematics
-from app.kinematics import ik_kernel
-from app.kinematics.ik.compiled import kernel_cache_stats, warm_up
+from app.kinematics import jit
+from app.kinematics.ik.warmup import kernel_cache_stats, warm_up
 
-pytestmark = pytest.mark.skipif(not ik_kernel.available(), reason="Numba not installed")
+pytestmark = pytest.mark.skipif(not jit.available(), reason="Numba not installed")
 
 
 def _dispatchers() -> list[object]:
@@ -37,7 +37,7 @@ def test_stats_count_every_compiled_signature_of_every_core_kernel() -> None:
     warm_up()
     dispatchers = _dispatchers()
     modules = {d.__module__ for d in dispatchers}
-    assert {"app.kinematics.ik_kernel", "app.kinematics.analytic_ik.ur"} <= modules
+    assert {"app.kinematics.ik.kernel", "app.kinematics.analytic_ik.ur"} <= modules
     signatures = sum(len(d.signatures) for d in dispatchers)
     stats = kernel_cache_stats()
     assert signatures > 0

@@ -15,7 +15,6 @@ import numpy as np
 import pytest
 
 from app.kinematics.ik.search import joint_distance
-from app.kinematics.paths import follow as follow_module
 from app.kinematics.paths.follow import PathOptions, follow
 from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import CartesianPath, Line
@@ -127,7 +126,7 @@ def test_deadline_already_past_stops_at_the_first_waypoint(
 
 @pytest.mark.parametrize(("robot_id", "frame"), ARMS)
 def test_deadline_by_a_fake_clock_keeps_the_points_so_far(
-    registry, robot_id: str, frame: str, monkeypatch
+    registry, robot_id: str, frame: str
 ) -> None:
     """A clock that advances one unit per reading, deadline 8: the walk stops with
     ``timeout`` at the first waypoint whose reading is ≥ 8, keeping the verified points
@@ -139,8 +138,7 @@ def test_deadline_by_a_fake_clock_keeps_the_points_so_far(
         readings.append(float(len(readings)))
         return readings[-1]
 
-    monkeypatch.setattr(follow_module, "_clock", clock)
-    res = follow(robot, line.q0, path, ik_options(frame), OPTIONS, deadline=8.0)
+    res = follow(robot, line.q0, path, ik_options(frame), OPTIONS, deadline=8.0, clock=clock)
     assert res.failure is not None and res.failure.reason == "timeout"
     assert readings[-1] == 8.0  # it stopped at the reading that passed the deadline
     poses, ss = path.sample(OPTIONS.max_step)

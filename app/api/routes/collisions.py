@@ -28,7 +28,7 @@ from app.api.schemas.common import (
     Vec3Out,
     group_field,
 )
-from app.kinematics.collision import collision_model, report_json
+from app.kinematics.collision import collision_model, collision_model_built, report_json
 from app.kinematics.collision_pairs import collision_link_pairs, collision_links
 from app.kinematics.groups import group
 from app.kinematics.models import RobotModel
@@ -181,7 +181,7 @@ async def check_collisions(
     robot = await load_robot(reg, robot_id)
     _, q = body.group_config(robot)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
-    built = robot.extras.get(f"collision.{body.geometry}") is not None
+    built = collision_model_built(robot, body.geometry)
     heavy = (
         not built
         or len(obstacles) > INLINE_OBSTACLES

@@ -168,7 +168,10 @@ async def solve_ik(
     check_budget(request, body.timeout_ms)
     robot = await load_robot(reg, robot_id)
     plan, solve = prepare_ik(request, robot, body)
-    out = solve() if plan.inline else await offload_cancellable(request, solve)
+    # inline only once the chain is built: its first build (the restart table, tens of ms)
+    # runs in the pool, never on the event loop
+    inline = plan.inline and ik.chain_ready(robot, plan.options)
+    out = solve() if inline else await offload_cancellable(request, solve)
     return ORJSONResponse(out)
 
 

@@ -37,7 +37,7 @@ from app.kinematics.analytic_ik.ur import (
     ur_geometry,
     ur_solutions,
 )
-from app.kinematics.ik_kernel import available as _compiled_available
+from app.kinematics.jit import available as _compiled_available
 from app.kinematics.mimic import has_followers
 from app.kinematics.models import RobotModel
 
@@ -50,18 +50,20 @@ def warm_up() -> None:
     ur.warm_up()
 
 
-def prepare(robot: RobotModel, ch: IKChain) -> tuple[URType | None, Planar2 | None]:
-    """Detect the chain's closed forms (set as ``ch.closed_form``) and compile the UR one
-    for its argument types, so that no query's budget pays for either."""
+def closed_forms(robot: RobotModel, ch: IKChain) -> tuple[URType | None, Planar2 | None]:
+    """The closed-form geometries of the chain (UR, planar 2R; None where none applies):
+    :attr:`IKChain.closed_form <app.kinematics.ik.precompute.IKChain.closed_form>`."""
     fid = ch.frame_id
     if has_followers(robot.model.supports[robot.model.frames[fid].parentJoint], robot.mimic_joints):
         # A mimic follower moves the frame: its chain is not the serial chain of ch.active.
-        ch.closed_form = (None, None)
-        return ch.closed_form
-    forms = ch.closed_form = (
-        ur_geometry(robot, ch.active, fid),
-        planar2_geometry(robot, ch.active, fid),
-    )
+        return (None, None)
+    return (ur_geometry(robot, ch.active, fid), planar2_geometry(robot, ch.active, fid))
+
+
+def prepare(robot: RobotModel, ch: IKChain) -> tuple[URType | None, Planar2 | None]:
+    """The chain's closed forms, with the UR one compiled for its argument types, so that
+    no query's budget pays for either."""
+    forms = ch.closed_form
     ur = forms[0]
     if ur is not None and _compiled_available():
         seed = np.ascontiguousarray(robot.mid_range()[ch.active])
@@ -80,10 +82,7 @@ def candidates(
     unreachable).
     """
     active = ch.active
-    forms = ch.closed_form
-    if forms is None:  # first use: detect once per chain (idempotent, so races are benign)
-        forms = prepare(robot, ch)
-    ur, planar = forms
+    ur, planar = ch.closed_form
     if ur is None and planar is None:
         return None
     lo, hi = ch.lower, ch.upper  # the limits, within ±MAX_JOINT_VALUE

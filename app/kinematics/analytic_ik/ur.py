@@ -35,8 +35,8 @@ import pinocchio as pin
 
 from app.kinematics.analytic_ik.planar2 import PARALLEL, REACH, Planar2, planar2_solutions
 from app.kinematics.analytic_ik.subproblems import rot, sp1, sp4, unit
-from app.kinematics.ik_kernel import available as compiled_available
-from app.kinematics.ik_kernel import jit
+from app.kinematics.jit import available as compiled_available
+from app.kinematics.jit import jit
 from app.kinematics.models import RobotModel
 
 

@@ -8,8 +8,12 @@ The package, one concept per module:
   active joints, restart table and its poses);
 - :mod:`.search`: one query's state, the verification of candidates, restarts, the result;
 - :mod:`.dls`: the damped least-squares loop in Python (every mode, every chain);
-- :mod:`.compiled`: the driver of the compiled search (:mod:`app.kinematics.ik_search_kernel`
-  around the attempts of :mod:`app.kinematics.ik_kernel`), full pose only;
+- :mod:`.parameters`: every tunable of the solver, by name
+  (:class:`~.parameters.SolverParameters`, :data:`~.parameters.DEFAULT_PARAMETERS`);
+- :mod:`.kernel`, :mod:`.search_kernel`: the compiled attempt and the compiled whole search
+  (Numba), and the named tuples they take;
+- :mod:`.compiled`: the driver of the compiled search, full pose only;
+- :mod:`.warmup`: compiling every kernel once per process;
 - here: :func:`solve`, which ties them together.
 
 Problem
@@ -98,11 +102,13 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.analytic_ik import candidates
-from app.kinematics.errors import Cancelled
+from app.kinematics.errors import Cancelled, KinematicsError
 from app.kinematics.groups import default_frame, group
+from app.kinematics.ik import precompute
 from app.kinematics.ik.compiled import run_compiled
 from app.kinematics.ik.dls import run_python
 from app.kinematics.ik.failure import UNREACHABLE_ITERATIONS, unreachable_detail
+from app.kinematics.ik.parameters import DEFAULT_PARAMETERS, SolverParameters
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import (
     IKOptions,
@@ -112,11 +118,18 @@ from app.kinematics.ik.problem import (
     seed_configuration,
 )
 from app.kinematics.ik.ranking import check_rank_by
-from app.kinematics.ik.search import IKResult, Search
+from app.kinematics.ik.search import Clock, IKResult, Search
 from app.kinematics.ik.version import SOLVER_VERSION
 from app.kinematics.models import RobotModel
 
-__all__ = ["SOLVER_VERSION", "IKResult", "solve"]
+__all__ = [
+    "DEFAULT_PARAMETERS",
+    "SOLVER_VERSION",
+    "IKResult",
+    "SolverParameters",
+    "chain_ready",
+    "solve",
+]
 
 _DEFAULT_OPTIONS = IKOptions()
 
@@ -132,6 +145,8 @@ def solve(
     cancel: threading.Event | None = None,
     clearance: Callable[[np.ndarray], float] | None = None,
     annotate: bool = False,
+    parameters: SolverParameters = DEFAULT_PARAMETERS,
+    clock: Clock = time.perf_counter,
 ) -> IKResult:
     """Joint configurations placing ``options.frame`` at ``target``.
 
@@ -158,7 +173,7 @@ def solve(
     cancel
         Optional event: once set (the caller's client went away), the search stops within
         one iteration (the Python loop) or one chunk of attempts (compiled,
-        :data:`~app.kinematics.ik.compiled.CHUNK_ATTEMPTS` attempts of ≤ 20 iterations) and
+        ``parameters.chunk_attempts`` attempts of ≤ 20 iterations) and
         :class:`~app.kinematics.errors.Cancelled` is raised.
     clearance
         Optional ``q ↦`` smallest robot–obstacle distance (m)
@@ -170,6 +185,13 @@ def solve(
         answer). Default False: only what the ranking needs (labels when several solutions
         are wanted, manipulability when ranked by it), so a single solution nearest the seed
         costs no label nor Jacobian (the benchmark's and trajectories' hot path).
+    parameters
+        The solver's tunables (:class:`~app.kinematics.ik.parameters.SolverParameters`;
+        default :data:`~app.kinematics.ik.parameters.DEFAULT_PARAMETERS`, what every
+        endpoint uses). The chain and its restart table are built and cached per parameters.
+    clock
+        The clock the time budget is measured on (s; default ``time.perf_counter``): a test
+        passes a fake one to exhaust the budget deterministically.
 
     Returns
     -------
@@ -184,10 +206,11 @@ def solve(
         (:mod:`.failure`; ``unreachable`` skips the search).
     """
     grp = group(robot, options.group)
-    ch = ik_chain(robot, frame_name(robot, default_frame(robot, grp, options.frame)), grp)
+    frame = frame_name(robot, default_frame(robot, grp, options.frame))
+    ch = ik_chain(robot, frame, grp, parameters)
     # The budget starts once the chain is prepared: its one-time set-up (restart table,
     # ~20 ms on the first query of a robot and frame) is not charged to the first query.
-    t_start = time.perf_counter()
+    t_start = clock()
     q_seed = ch.mid_range.copy() if seed is None else np.array(seed_configuration(robot, seed))
     check_target(target)
     deadline = t_start + options.timeout_ms * 1e-3
@@ -197,7 +220,13 @@ def solve(
     task = options.task()
     problem = IKProblem(robot, ch, target, q_seed, options, task)
     search = Search(
-        problem, accept=accept, cancel=cancel, rng=rng, clearance=clearance, annotate=annotate
+        problem,
+        accept=accept,
+        cancel=cancel,
+        rng=rng,
+        clearance=clearance,
+        annotate=annotate,
+        clock=clock,
     )
     far = unreachable_detail(robot, ch, q_seed, target, task, search.tol_p)
     if far is not None:
@@ -223,6 +252,21 @@ def solve(
             method = "analytic+numeric"
         _descend(search, deadline, options.max_iterations)
     return search.result(method, t_start)
+
+
+def chain_ready(
+    robot: RobotModel, options: IKOptions, parameters: SolverParameters = DEFAULT_PARAMETERS
+) -> bool:
+    """Whether the chain :func:`solve` needs for ``options`` is built already: else the first
+    query builds it (the restart table's poses, tens of ms), and a caller on an event loop
+    runs that query elsewhere. False for a bad frame or group too (:func:`solve` raises the
+    error, wherever it runs)."""
+    try:
+        grp = group(robot, options.group)
+        frame = frame_name(robot, default_frame(robot, grp, options.frame))
+    except KinematicsError:
+        return False
+    return precompute.chain_ready(robot, frame, grp, parameters)
 
 
 def _descend(search: Search, deadline: float, max_iterations: int | None) -> None:

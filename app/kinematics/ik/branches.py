@@ -106,13 +106,14 @@ def _parallel(a: np.ndarray, b: np.ndarray) -> bool:
     return float(np.linalg.norm(np.cross(a, b))) <= STRUCTURE_TOL
 
 
-def _detect(robot: RobotModel, ch: IKChain) -> BranchForm | None:
-    """The :class:`BranchForm` of a chain, or None."""
+def detect_branch_form(robot: RobotModel, ch: IKChain) -> BranchForm | None:
+    """The :class:`BranchForm` of a chain, or None (computed: :attr:`IKChain.branch_form`
+    caches it)."""
     joints = [robot.joints[i] for i in ch.active]
     model = robot.model
     if any(model.joints[j.pin_id].nv != 1 for j in joints):
         return None
-    forms = ch.closed_form if ch.closed_form is not None else (None, None)
+    forms = ch.closed_form
     pin_ids = tuple(j.pin_id for j in joints)
     idx_v = tuple(int(model.joints[p].idx_v) for p in pin_ids)
     axes = np.array([np.asarray(j.axis, float) / np.linalg.norm(j.axis) for j in joints])
@@ -144,9 +145,7 @@ def _detect(robot: RobotModel, ch: IKChain) -> BranchForm | None:
 
 def branch_form(robot: RobotModel, ch: IKChain) -> BranchForm | None:
     """The chain's :class:`BranchForm` (None: no branch flags), detected once and cached on
-    the chain (``ch.branch_form``; idempotent, so concurrent first uses are benign)."""
-    if ch.branch_form is False:
-        ch.branch_form = _detect(robot, ch)
+    the chain (:attr:`IKChain.branch_form`)."""
     return ch.branch_form
 
 

@@ -9,14 +9,15 @@ One iteration (the error, its Jacobian and the step are derived in :mod:`app.kin
    elsewhere for further solutions, or stops.
 3. Far from the target on the very first iterate: jump to the nearest table sample
    (:meth:`~app.kinematics.ik.search.Search.seed_is_far`).
-4. Stall test: no 10 % decrease of ‖e‖ in :data:`STALL` iterations, or :data:`ATTEMPT_CAP`
-   iterations in one attempt, restarts.
+4. Stall test: no progress (‖e‖ decreased by 10 %) in ``stall`` iterations, or
+   ``attempt_cap`` iterations in one attempt, restarts.
 5. :meth:`_Loop.step`: the damped least-squares step on the task rows (null-space pull
    towards the seed on redundant chains), clipped to the limits, with the joints pushed
    against a limit locked and the step recomputed.
 
-The constants below are shared with the compiled attempt (:mod:`app.kinematics.ik.compiled`),
-so both loops take the same iterates.
+The tunables are the search's :class:`~app.kinematics.ik.parameters.SolverParameters`, the
+same the compiled attempt (:mod:`app.kinematics.ik.kernel`) reads, so both loops take the
+same iterates.
 """
 
 from __future__ import annotations
@@ -33,35 +34,12 @@ from app.kinematics.angles import wrap_angle
 if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
 
-#: Damping floor μ added to λ² (keeps A invertible at exact singularities).
-MU = 1e-10
-#: Error-proportional damping: λ² = DAMP·‖e‖² + μ.
-DAMP = 0.01
-#: Null-space gain α towards the reference configuration (redundant chains only).
-NULL_GAIN = 0.2
-#: Squared task error below which the null-space gain fades proportionally (a constant pull
-#: would leave a second-order task error each step and make convergence linear).
-NULL_ENERGY = 1e-2
-#: Squared task error below which the (faded) null-space term is skipped altogether.
-NULL_FLOOR = 1e-8
-#: Largest joint step per iteration (rad or m), keeps the linearisation honest.
-MAX_STEP = 2.0
-#: Iterations without a 10 % error decrease before a restart.
-STALL = 2
-#: Iteration cap of one attempt (from the seed or a restart).
-ATTEMPT_CAP = 20
-#: Lock joints pushed against a limit for the step (active-set clamping).
-CLAMP = True
-#: Jump from a far seed to the nearest table sample after the first iteration
-#: (:meth:`~app.kinematics.ik.search.Search.seed_is_far`).
-NEAREST_FIRST = True
-
 _EYES = [np.eye(i) for i in range(7)]
 # The hot loop's library calls, looked up once.
 _jacobians, _placement, _log3 = pin.computeJointJacobians, pin.updateFramePlacement, pin.log3
 _LWA = pin.LOCAL_WORLD_ALIGNED
 _inner, _dot, _minimum, _maximum = np.inner, np.dot, np.minimum, np.maximum
-_MAX_STEP2 = MAX_STEP * MAX_STEP
+_isfinite = np.isfinite
 
 
 def _frame_jacobian_6xn(
@@ -78,12 +56,14 @@ class _Loop:
         "search", "model", "data", "fid", "lo", "hi", "RtT", "pt", "rows", "sw", "full_pose",
         "eye", "q_ref", "tol_p2", "tol_r2", "check_pos", "check_rot", "rows_p", "rows_r",
         "all_plain", "plain", "plain_q", "cont", "cont_q", "cont_q1", "gfj",
-        "clamp", "redundant", "cols", "qp", "e", "ev", "ew", "L", "use_jlog",
+        "clamp", "redundant", "cols", "qp", "e", "ev", "ew", "L", "use_jlog", "p", "null_scale",
     )  # fmt: skip
 
     def __init__(self, s: Search) -> None:
         robot, ch = s.robot, s.ch
         self.search = s
+        self.p = p = s.parameters
+        self.null_scale = 1.0 / p.null_energy
         self.model, self.data = robot.model, robot.data
         self.fid = ch.frame_id
         self.lo, self.hi = ch.clip_lo, ch.clip_hi
@@ -109,8 +89,8 @@ class _Loop:
         # 1-DoF arm, or one joint and its mimic followers): keep it a 6×1 matrix.
         self.gfj = _frame_jacobian_6xn if self.model.nv == 1 else pin.getFrameJacobian
         # A locked joint leaves a square chain short of a task row: clamp redundant ones only.
-        self.clamp = CLAMP and redundant
-        self.redundant = redundant and NULL_GAIN > 0.0
+        self.clamp = p.clamp and redundant
+        self.redundant = redundant and p.null_gain > 0.0
         self.cols = ch.cols_sel
         self.qp = robot.to_pin(s.q_seed)
         self.e = np.empty(6)
@@ -174,19 +154,19 @@ class _Loop:
             Jt = Je[self.rows]
             if self.sw is not None:
                 Jt = Jt * self.sw[:, None]
-        eye = self.eye
-        lam2 = DAMP * energy + MU
+        eye, p = self.eye, self.p
+        lam2 = p.damp * energy + p.mu
         A = _inner(Jt, Jt)  # J Jᵀ
         A += lam2 * eye
         # nd = −Δq (the sign folded into the update below)
-        if self.redundant and energy > NULL_FLOOR and not self.search.restarts:
+        if self.redundant and energy > p.null_floor and not self.search.restarts:
             # Preference gain fades with the error (quadratic convergence kept).
-            z = (self.q_ref - qa) * (NULL_GAIN * min(1.0, energy * (1.0 / NULL_ENERGY)))
-            nd = _posv(A, et + _dot(Jt, z))[1] @ Jt - z
+            z = (self.q_ref - qa) * (p.null_gain * min(1.0, energy * self.null_scale))
+            nd = spd_solve(A, et + _dot(Jt, z)) @ Jt - z
         else:
-            nd = _posv(A, et)[1] @ Jt
+            nd = spd_solve(A, et) @ Jt
         lo, hi = self.lo, self.hi
-        q_new = _move(qa, nd, self.cont)
+        q_new = _move(qa, nd, self.cont, p.max_step)
         q_next = _minimum(_maximum(q_new, lo), hi)
         if self.clamp and (q_next != q_new).any():
             # Joints already at a limit and pushed further are locked for this step (their
@@ -196,17 +176,37 @@ class _Loop:
                 Jl = Jt * ~locked
                 A = _inner(Jl, Jl)
                 A += lam2 * eye
-                q_new = _move(qa, _posv(A, et)[1] @ Jl, self.cont)
+                q_new = _move(qa, spd_solve(A, et) @ Jl, self.cont, p.max_step)
                 q_next = _minimum(_maximum(q_new, lo), hi)
         return q_next
 
 
-def _move(qa: np.ndarray, nd: np.ndarray, cont: np.ndarray | None) -> np.ndarray:
-    """qa − nd with the step length capped at :data:`MAX_STEP`, the continuous joints (at
+def spd_solve(A: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """x = A⁻¹ b for the damped Gram matrix A = J Jᵀ + λ² I (m, m), by LAPACK ``posv``.
+
+    A is positive definite in exact arithmetic (λ² ≥ μ > 0); when ``posv`` reports that it
+    is not in floating point (``info`` ≠ 0: a non-positive pivot, rounding on a huge robot;
+    or a non-finite solution: a NaN entry), the more damped system (A + 2‖A‖_F·I) x = b is
+    solved instead (positive definite whatever A), and x = 0 (no step) if that fails too:
+    never a NaN or garbage step.
+    """
+    _, x, info = _posv(A, b)
+    if info == 0 and _isfinite(x).all():  # (posv reports no error for NaN entries)
+        return x
+    extra = 2.0 * float(np.linalg.norm(A))
+    if math.isfinite(extra):
+        _, x, info = _posv(A + extra * np.eye(A.shape[0]), b)
+        if info == 0 and np.isfinite(x).all():
+            return x
+    return np.zeros_like(b, dtype=float)
+
+
+def _move(qa: np.ndarray, nd: np.ndarray, cont: np.ndarray | None, max_step: float) -> np.ndarray:
+    """qa − nd with the step length capped at ``max_step``, the continuous joints (at
     positions ``cont``, None: none) wrapped to (−π, π]; not yet clipped to the limits."""
     n2 = nd @ nd
-    if n2 > _MAX_STEP2:
-        nd *= MAX_STEP / math.sqrt(n2)
+    if n2 > max_step * max_step:
+        nd *= max_step / math.sqrt(n2)
     q_new = qa - nd
     if cont is not None:
         q_new[cont] = wrap_angle(q_new[cont])
@@ -215,12 +215,15 @@ def _move(qa: np.ndarray, nd: np.ndarray, cont: np.ndarray | None) -> np.ndarray
 
 def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
     """Damped least squares from the seed, then from restarts, until ``s`` is done, the
-    deadline (``time.perf_counter``) passes or ``max_iterations`` are spent.
+    deadline (``s.clock``) passes or ``max_iterations`` are spent.
 
     Updates ``s`` in place: its solutions (via :meth:`Search.offer`), iteration and restart
     counts, best iterate and ``timed_out``; raises ``Cancelled`` once ``s.cancel`` is set.
     """
     loop = _Loop(s)
+    p = s.parameters
+    progress, stall_limit, attempt_cap = p.progress, p.stall, p.attempt_cap
+    nearest_first = p.nearest_first
     cap = max_iterations if max_iterations is not None else 1 << 62
     qa = loop.q_ref.copy()
     attempt_iters = 0
@@ -245,19 +248,19 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
                 attempt_iters, best_attempt, stall = 0, math.inf, 0
                 continue
             # First iterate far from the target: jump to the nearest table sample.
-            if it == 1 and NEAREST_FIRST and loop.full_pose:
+            if it == 1 and nearest_first and loop.full_pose:
                 if s.seed_is_far(ep2, Re[0, 0] + Re[1, 1] + Re[2, 2]):
                     qa = s.restart()
                     attempt_iters, best_attempt, stall = 0, math.inf, 0
                     continue
             if energy < best_energy:
                 best_energy, best_qa = energy, qa
-            if energy < 0.81 * best_attempt:  # ‖e‖ decreased by 10 %
+            if energy < progress * best_attempt:  # ‖e‖ decreased by 10 % (0.81 = 0.9²)
                 best_attempt = energy
                 stall = 0
             else:
                 stall += 1
-                if stall >= STALL or attempt_iters >= ATTEMPT_CAP:
+                if stall >= stall_limit or attempt_iters >= attempt_cap:
                     qa = s.restart()
                     attempt_iters, best_attempt, stall = 0, math.inf, 0
                     continue

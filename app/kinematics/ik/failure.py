@@ -81,13 +81,11 @@ ReachParts = tuple[np.ndarray, float, tuple[int, ...]]
 
 def _reach_parts(robot: RobotModel, ch: IKChain) -> ReachParts | None:
     """(b, the seed-independent part of R, wire indices of held prismatic joints), or None
-    when the chain has no bound. Cached on the chain."""
-    if ch.reach_parts is False:
-        ch.reach_parts = _reach_parts_of(robot, ch)
+    when the chain has no bound. Cached on the chain (:attr:`IKChain.reach_parts`)."""
     return ch.reach_parts
 
 
-def _reach_parts_of(robot: RobotModel, ch: IKChain) -> ReachParts | None:
+def reach_parts_of(robot: RobotModel, ch: IKChain) -> ReachParts | None:
     """:func:`_reach_parts`, computed."""
     model = robot.model
     fr = model.frames[ch.frame_id]

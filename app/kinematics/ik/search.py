@@ -23,17 +23,13 @@ import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, InvalidInputError
 from app.kinematics.ik.failure import classify, outside_limits
-from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
+from app.kinematics.ik.parameters import SolverParameters
+from app.kinematics.ik.precompute import k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
 from app.kinematics.ik.ranking import Grouping, joint_distance, representatives
 
-#: Two solutions are distinct when some joint differs by more than this (rad or m).
-DISTINCT = 1e-3
-#: Restarts taken from the table samples nearest the target before random jumps.
-NEAREST = 32
-#: The loops jump from the seed to the nearest table sample at once when that sample's pose
-#: is much closer to the target (distance ratio below this; see ``dls.NEAREST_FIRST``).
-NEAREST_RATIO = 0.5
+#: The budget's clock (s): ``time.perf_counter`` unless the caller injects another.
+Clock = Callable[[], float]
 
 
 @dataclass(slots=True)
@@ -112,6 +108,8 @@ class Search:
     annotate
         Label every answered solution's branch and manipulability (else only what the
         ranking needs, :func:`~.ranking.representatives`).
+    clock
+        The clock the deadline is read on (s; default ``time.perf_counter``).
     """
 
     def __init__(
@@ -123,8 +121,12 @@ class Search:
         rng: np.random.Generator | None = None,
         clearance: Callable[[np.ndarray], float] | None = None,
         annotate: bool = True,
+        clock: Clock = time.perf_counter,
     ) -> None:
         task, options = problem.task, problem.options
+        self.clock = clock
+        #: The solver's tunables (the chain's: its table was built with them).
+        self.parameters: SolverParameters = problem.chain.parameters
         self.options = options
         self.robot, self.ch, self.target = problem.robot, problem.chain, problem.target
         self.q_seed = problem.seed
@@ -207,7 +209,7 @@ class Search:
         if not (math.isfinite(ep_full) and math.isfinite(er_full)):
             return False  # a pose that overflows float64 (even on unchecked components)
         for s in self.solutions:
-            if joint_distance(robot, s.q, q).max() <= DISTINCT:
+            if joint_distance(robot, s.q, q).max() <= self.parameters.distinct:
                 return False
         if self.accept is not None and not self.accept(q):
             self.rejected += 1
@@ -245,11 +247,11 @@ class Search:
 
     def out_of_budget(self, iterations: int, cap: int, deadline: float) -> bool:
         """Whether the loop must stop before another iteration (attempt, compiled): the
-        iteration cap is reached, or the deadline (``time.perf_counter``) has passed (then
+        iteration cap is reached, or the deadline (:attr:`clock`) has passed (then
         ``timed_out`` is set). Raises :class:`Cancelled` once ``cancel`` is set."""
         if iterations >= cap:
             return True
-        if time.perf_counter() >= deadline:
+        if self.clock() >= deadline:
             self.timed_out = True
             return True
         if self.cancel is not None and self.cancel.is_set():
@@ -259,7 +261,7 @@ class Search:
     # --------------------------------------------------------------------- restarts
     def seed_is_far(self, ep2: float, trace: float) -> bool:
         """Whether the nearest table sample's pose is much closer to the target than the
-        seed's (distance ratio below :data:`NEAREST_RATIO`): then the loop jumps there at once.
+        seed's (distance ratio below ``nearest_ratio``): then the loop jumps there at once.
 
         ``ep2`` is ‖p − p_t‖² at the seed and ``trace`` tr(R R_tᵀ), so that the seed's
         distance is ‖p − p_t‖² + c‖R − R_t‖²_F = ep2 + 2c(3 − trace). Ranks the table (kept
@@ -267,30 +269,32 @@ class Search:
         """
         d, k_t, i = self.ch.sample_distances_argmin(self.target)
         self.distances, self.nearest_one = d, i
-        d_seed = ep2 + (2.0 * ROT_WEIGHT) * (3.0 - trace)
-        return d[i] + k_t < NEAREST_RATIO * d_seed
+        p = self.parameters
+        d_seed = ep2 + (2.0 * p.rot_weight) * (3.0 - trace)
+        return d[i] + k_t < p.nearest_ratio * d_seed
 
     def restart(self) -> np.ndarray:
         """The next restart configuration of the active joints.
 
-        The first ``NEAREST`` restarts start from the samples of the chain's table whose
+        The first ``nearest`` restarts start from the samples of the chain's table whose
         pose is nearest the target (full pose only); then uniform random jumps (TRAC-IK):
         drawn from ``rng`` when given, else the table in order.
         """
         self.restarts += 1
         ch = self.ch
         i = self.restarts - 1
-        if self.full_pose and NEAREST > 0:
+        nearest = self.parameters.nearest
+        if self.full_pose and nearest > 0:
             if self.distances is None:
                 self.distances, _, self.nearest_one = ch.sample_distances_argmin(self.target)
             if i == 0:  # the nearest sample alone: no need to rank the others yet
                 return ch.restart_table[self.nearest_one]
             if self.nearest is None:
-                self.nearest = k_smallest(self.distances, NEAREST)
+                self.nearest = k_smallest(self.distances, nearest)
             if i < len(self.nearest):
                 return ch.restart_table[self.nearest[i]]
         if self.rng is None:
-            return ch.restart_table[i % TABLE]
+            return ch.restart_table[i % ch.restart_table.shape[0]]
         return self.random_start()
 
     def random_start(self) -> np.ndarray:
@@ -315,7 +319,7 @@ class Search:
             wanted=self.wanted,
             annotate=self.annotate,
         )
-        elapsed = (time.perf_counter() - t_start) * 1e3
+        elapsed = (self.clock() - t_start) * 1e3
         if sols:
             best = sols[0]
             return IKResult(
@@ -342,7 +346,7 @@ class Search:
             [],
             self.iterations,
             self.restarts,
-            (time.perf_counter() - t_start) * 1e3,
+            (self.clock() - t_start) * 1e3,
             method,
             reason,
             detail,

@@ -54,6 +54,7 @@ from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.branches import branch_label
 from app.kinematics.ik.precompute import IKChain, ik_chain
 from app.kinematics.ik.problem import IKOptions, frame_name
+from app.kinematics.ik.search import Clock
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
 from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
@@ -61,7 +62,8 @@ from app.kinematics.paths.segments import CartesianPath, check_max_step
 
 __all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
 
-#: The clock of ``deadline`` (a module attribute so that tests can replace it).
+#: The default clock of ``deadline`` when :func:`follow` is given none (a module attribute,
+#: so that a test going through HTTP can replace it).
 _clock = time.perf_counter
 #: Halvings of a Cartesian step that the local attempt could not make, before giving up.
 MAX_BISECT = 4
@@ -171,9 +173,13 @@ class _Walk:
         rng: np.random.Generator | None,
         cancel: threading.Event | None,
         deadline: float | None = None,
+        clock: Clock | None = None,
     ) -> None:
         self.robot, self.path, self.options = robot, path, options
         self.deadline = deadline
+        #: The deadline's clock, and the IK solves' (``time.perf_counter`` unless injected).
+        self.now: Clock = _clock if clock is None else clock
+        self.ik_clock: Clock = time.perf_counter if clock is None else clock
         self.ch = _frame_and_chain(robot, ik_options)
         self.task = ik_options.task()
         self.full = replace(ik_options, num_solutions=1)
@@ -217,7 +223,7 @@ class _Walk:
         g = self.guard(q_prev, record_all=full)
         opts = self.full if full else self.local
         if self.deadline is not None:
-            left_ms = (self.deadline - _clock()) * 1e3
+            left_ms = (self.deadline - self.now()) * 1e3
             if left_ms < opts.timeout_ms:
                 opts = replace(opts, timeout_ms=max(left_ms, MIN_SOLVE_MS))
         res = ik.solve(
@@ -228,6 +234,7 @@ class _Walk:
             accept=g,
             rng=self.rng,
             cancel=self.cancel,
+            clock=self.ik_clock,
         )
         self.iterations += res.iterations
         return res, g
@@ -351,6 +358,7 @@ def follow(
     rng: np.random.Generator | None = None,
     cancel: threading.Event | None = None,
     deadline: float | None = None,
+    clock: Clock | None = None,
 ) -> PathResult:
     """Joint configurations following ``path`` from ``start`` (see the module docstring).
 
@@ -377,6 +385,9 @@ def follow(
         passed, the walk stops before the next waypoint with the failure reason ``timeout``
         (the points reached so far are kept). Each IK solve keeps its own ``timeout_ms``, at
         most the time left.
+    clock
+        The clock (s) of ``deadline`` and of every IK solve's budget; default
+        ``time.perf_counter`` (a test passes a fake one).
 
     Returns
     -------
@@ -384,7 +395,7 @@ def follow(
         The points reached and, when the path could not be completed, the typed failure.
     """
     t0 = time.perf_counter()
-    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel, deadline)
+    walk = _Walk(robot, path, ik_options, options, accept, rng, cancel, deadline, clock)
     q0 = robot.configuration(start, field="start")
     for i in np.flatnonzero((q0 < robot.lower) | (q0 > robot.upper)):
         raise InvalidInputError(
@@ -413,7 +424,7 @@ def follow(
     else:
         points.append(PathPoint(q0.copy(), ep, er, 0.0))
     for k in range(1, len(poses)) if failure is None else ():
-        if deadline is not None and _clock() >= deadline:
+        if deadline is not None and walk.now() >= deadline:
             failure = _timed_out(walk, k, float(ss[k]))
             break
         out = walk.advance(poses[k], float(ss[k]))

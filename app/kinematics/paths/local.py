@@ -2,7 +2,7 @@
 
 Along a path the next pose is a small step from the last point, so one damped least-squares
 attempt from the last point's joints (the compiled kernel,
-:func:`app.kinematics.ik_kernel.attempt`, at most :data:`LOCAL_ITERATIONS` Jacobian
+:func:`app.kinematics.ik.kernel.attempt`, at most :data:`LOCAL_ITERATIONS` Jacobian
 evaluations, no restarts, no closed forms, no ranking) usually lands on the next point in
 two or three iterations, for a fraction of the fixed cost of :func:`app.kinematics.ik.solve`
 (its validation, reach bound, table distances and result). Nothing the kernel claims is
@@ -22,18 +22,10 @@ from __future__ import annotations
 import numpy as np
 import pinocchio as pin
 
-from app.kinematics import ik_kernel
+from app.kinematics import jit
 from app.kinematics.fk import frame_pose
-from app.kinematics.ik.dls import (
-    CLAMP,
-    DAMP,
-    MAX_STEP,
-    MU,
-    NULL_ENERGY,
-    NULL_FLOOR,
-    NULL_GAIN,
-    STALL,
-)
+from app.kinematics.ik import kernel
+from app.kinematics.ik.boundary import step_parameters
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
 from app.kinematics.models import RobotModel
@@ -69,15 +61,17 @@ class LocalSolver:
         self.robot, self.ch = robot, chain
         cc = chain.compiled
         #: Whether the local attempt applies (full pose, compiled chain).
-        self.available = bool(task.full_pose and cc is not None and ik_kernel.available())
+        self.available = bool(task.full_pose and cc is not None and jit.available())
         cap = LOCAL_ITERATIONS if max_iterations is None else min(max_iterations, LOCAL_ITERATIONS)
         self.cap = cap
         if not self.available:
             return
         redundant = chain.k > 6
-        self._consts = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, chain.clip_lo, chain.clip_hi)
-        self._cont = chain.cont_mask
-        self._flags = (redundant and NULL_GAIN > 0.0, CLAMP and redundant)
+        p = chain.parameters
+        self._chain = chain.chain_constants
+        # the attempt's cap is this solver's, not the search's
+        self._step = step_parameters(p, attempt_cap=cap)
+        self._flags = (redundant and p.null_gain > 0.0, p.clamp and redundant)
         self._tol2 = (float(tolerance[0]) ** 2, float(tolerance[1]) ** 2)
         self._best = np.empty(1)
         self._best_q = np.empty(chain.k)
@@ -98,14 +92,15 @@ class LocalSolver:
         q_ref = qa.copy()
         self._best[0] = np.inf
         null_on, clamp = self._flags
-        outcome, n = ik_kernel.attempt(
-            qa, *self._consts, self._cont,
-            np.ascontiguousarray(target.rotation), np.ascontiguousarray(target.translation),
-            q_ref, null_on, clamp, *self._tol2, self.cap,
-            STALL, self.cap, DAMP, MU, NULL_GAIN, 1.0 / NULL_ENERGY,
-            NULL_FLOOR, MAX_STEP, self._best, self._best_q,
+        args = (
+            qa, self._chain,
+            np.ascontiguousarray(target.rotation, dtype=np.float64),
+            np.ascontiguousarray(target.translation, dtype=np.float64),
+            q_ref, bool(null_on), bool(clamp), *self._tol2, int(self.cap), self._step,
+            self._best, self._best_q,
         )  # fmt: skip
-        if outcome != ik_kernel.CONVERGED:
+        outcome, n = jit.direct(kernel.attempt, *args)(*args)
+        if outcome != kernel.CONVERGED:
             return None, int(n)
         q = q_prev.copy()
         q[ch.active] = qa

@@ -35,43 +35,15 @@ Numba compiles on first use (a few seconds) and caches the machine code next to 
 from __future__ import annotations
 
 import math
-import threading
 
 import numpy as np
 
 from app.kinematics.chain import SerialChain
-
-try:  # pragma: no cover - numba is a pinned dependency; the fallback is the Python loop
-    import numba
-
-    _NUMBA = True
-except ImportError:  # pragma: no cover
-    numba = None
-    _NUMBA = False
+from app.kinematics.ik.boundary import ChainConstants, StepParameters
+from app.kinematics.jit import jit
 
 #: Attempt outcomes returned by :func:`attempt`.
 CONVERGED, RESTART, CAPPED = 0, 1, 2
-
-
-def available() -> bool:
-    """Whether the compiled loop can be used (numba importable)."""
-    return _NUMBA
-
-
-def jit(fn):
-    """Numba's ``njit`` (releasing the GIL), or ``fn`` itself without Numba.
-
-    Cached on disk when Numba finds a writable place (``NUMBA_CACHE_DIR``, next to the
-    sources, or the user's cache directory); where it finds none (a read-only install, no
-    home directory) Numba refuses ``cache=True`` at import, and the kernels are compiled
-    in memory by every process instead: slower start, same service.
-    """
-    if numba is None:  # pragma: no cover
-        return fn
-    try:
-        return numba.njit(cache=True, nogil=True)(fn)
-    except RuntimeError:  # "cannot cache function ...: no locator available"
-        return numba.njit(cache=False, nogil=True)(fn)
 
 
 @jit
@@ -169,12 +141,15 @@ def _log3(M, out):  # pragma: no cover
 @jit
 def _solve_spd(A, b, x):  # pragma: no cover
     """x = A⁻¹ b for a symmetric positive definite A (m, m), by Cholesky (A is overwritten
-    by its factor)."""
+    by its factor). Returns False, ``x`` undefined, when a pivot is not positive (A is not
+    positive definite in floating point, or holds a NaN)."""
     m = A.shape[0]
     for j in range(m):
         d = A[j, j]
         for k in range(j):
             d -= A[j, k] * A[j, k]
+        if not d > 0.0:
+            return False
         d = math.sqrt(d)
         A[j, j] = d
         for i in range(j + 1, m):
@@ -192,13 +167,15 @@ def _solve_spd(A, b, x):  # pragma: no cover
         for k in range(i + 1, m):
             v -= A[k, i] * x[k]
         x[i] = v / A[i, i]
+    return True
 
 
 @jit
-def _dls(J, e, lam2, locked, nd, A, y):  # pragma: no cover
-    """nd = Jᵀ (J Jᵀ + λ² I)⁻¹ e over the unlocked columns (locked columns count as 0);
-    ``A`` (6, 6) and ``y`` (6,) are scratch."""
+def _gram(J, lam2, locked, A, norm):  # pragma: no cover
+    """A = J Jᵀ + λ² I over the unlocked columns; returns its Frobenius norm if ``norm``
+    (else 0)."""
     k = J.shape[1]
+    f = 0.0
     for i in range(6):
         for j in range(i + 1):
             v = 0.0
@@ -208,7 +185,34 @@ def _dls(J, e, lam2, locked, nd, A, y):  # pragma: no cover
             A[i, j] = v
             A[j, i] = v
         A[i, i] += lam2
-    _solve_spd(A, e, y)
+    if norm:
+        for i in range(6):
+            for j in range(6):
+                f += A[i, j] * A[i, j]
+    return math.sqrt(f)
+
+
+@jit
+def _dls(J, e, lam2, locked, nd, A, y):  # pragma: no cover
+    """nd = Jᵀ (J Jᵀ + λ² I)⁻¹ e over the unlocked columns (locked columns count as 0);
+    ``A`` (6, 6) and ``y`` (6,) are scratch.
+
+    A is positive definite in exact arithmetic (λ² ≥ μ > 0); when its Cholesky meets a
+    non-positive pivot anyway (rounding on a huge robot, a NaN), the step is the more
+    damped one with λ² + 2‖A‖_F (A + 2‖A‖_F·I is positive definite whatever A), and a zero
+    step if that fails too (non-finite entries): never a NaN step."""
+    k = J.shape[1]
+    _gram(J, lam2, locked, A, False)
+    if not _solve_spd(A, e, y):
+        extra = 2.0 * _gram(J, lam2, locked, A, True)
+        ok = False
+        if math.isfinite(extra):
+            for i in range(6):
+                A[i, i] += extra
+            ok = _solve_spd(A, e, y)
+        if not ok:
+            for i in range(6):
+                y[i] = 0.0
     for s in range(k):
         if locked[s]:
             nd[s] = 0.0
@@ -248,8 +252,10 @@ def _step_to(q_old, nd, max_step, cont, lo, hi, q_new, qa):  # pragma: no cover
 
 
 @jit
-def pose_error(qa, C, t, prism, last_C, last_t, Rt, pt):  # pragma: no cover
-    """(‖p − p_t‖², ‖log3(R R_tᵀ)‖², trace(R R_tᵀ)) of the frame at ``qa``."""
+def pose_error(qa, chain, Rt, pt):  # pragma: no cover
+    """(‖p − p_t‖², ‖log3(R R_tᵀ)‖², trace(R R_tᵀ)) of the frame at ``qa`` (``chain``: the
+    :class:`ChainConstants`)."""
+    C, t, prism, last_C, last_t = chain.C, chain.t, chain.prism, chain.last_C, chain.last_t
     k = qa.shape[0]
     R = np.empty((3, 3))
     p = np.empty(3)
@@ -269,21 +275,27 @@ def pose_error(qa, C, t, prism, last_C, last_t, Rt, pt):  # pragma: no cover
 
 @jit
 def attempt(  # pragma: no cover
-    qa, C, t, prism, last_C, last_t, lo, hi, cont, Rt, pt, q_ref,
-    null_on, clamp, tol_p2, tol_r2, max_iters, stall_limit, attempt_cap,
-    damp, mu, gain, null_scale, null_floor, max_step, best, best_q,
-):  # fmt: skip
+    qa, chain, Rt, pt, q_ref, null_on, clamp, tol_p2, tol_r2, max_iters, step, best, best_q
+):
     """One attempt of damped least squares from ``qa`` (k,), updated in place.
 
-    Iterates until the pose error is within tolerance (returns ``CONVERGED``, ``qa`` the
-    converged iterate), the error stalls (no 10 % decrease of ‖e‖ in ``stall_limit``
-    iterations) or ``attempt_cap`` iterations pass (``RESTART``), or ``max_iters`` run out
+    ``chain`` is the chain's :class:`ChainConstants`, ``step`` the loop's
+    :class:`StepParameters`; ``Rt`` (3, 3), ``pt`` (3,) the target (root frame); ``tol_p2``,
+    ``tol_r2`` the squared tolerances (m², rad²). Iterates until the pose error is within
+    tolerance (returns ``CONVERGED``, ``qa`` the converged iterate), the error stalls (no
+    progress, ‖e‖² < ``step.progress``·best of the attempt, in ``step.stall`` iterations) or
+    ``step.attempt_cap`` iterations pass (``RESTART``), or ``max_iters`` run out
     (``CAPPED``). ``null_on`` adds the null-space pull towards ``q_ref``; ``clamp`` locks
     joints pushed against a limit. ``best`` (1,) and ``best_q`` (k,) hold the lowest error
     energy ‖e‖² of unconverged iterates seen so far, updated in place.
 
     Returns (outcome, iterations evaluated).
     """
+    C, t, prism, last_C, last_t = chain.C, chain.t, chain.prism, chain.last_C, chain.last_t
+    lo, hi, cont = chain.lo, chain.hi, chain.cont
+    damp, mu, gain, null_scale = step.damp, step.mu, step.gain, step.null_scale
+    null_floor, max_step, progress = step.null_floor, step.max_step, step.progress
+    stall_limit, attempt_cap = step.stall, step.attempt_cap
     k = qa.shape[0]
     R = np.empty((3, 3))
     p = np.empty(3)
@@ -325,7 +337,7 @@ def attempt(  # pragma: no cover
             best[0] = energy
             for s in range(k):
                 best_q[s] = qa[s]
-        if energy < 0.81 * best_attempt:  # ‖e‖ decreased by 10 %
+        if energy < progress * best_attempt:
             best_attempt = energy
             stall = 0
         else:
@@ -408,6 +420,15 @@ class CompiledChain:
             cj.last_t,
         )
 
+    def constants(self, lo: np.ndarray, hi: np.ndarray, cont: np.ndarray) -> ChainConstants:
+        """This chain's :class:`ChainConstants` with the limits ``lo``, ``hi`` (k,) and the
+        continuous joints ``cont`` (k,) bool."""
+        return ChainConstants(
+            self.C, self.t, self.prism, self.last_C, self.last_t,
+            np.ascontiguousarray(lo, dtype=np.float64), np.ascontiguousarray(hi, dtype=np.float64),
+            np.ascontiguousarray(cont, dtype=np.bool_),
+        )  # fmt: skip
+
     def pose(self, qa: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Rotation, position and world Jacobian at ``qa`` (for tests and diagnostics)."""
         k = qa.shape[0]
@@ -426,41 +447,38 @@ def log3(M: np.ndarray) -> np.ndarray:
     return out
 
 
-_WARM = threading.Lock()
-_warmed = False
-
-
-def warmed() -> bool:
-    """Whether :func:`warm_up` has run in this process."""
-    return _warmed
-
-
 def warm_up() -> None:
-    """Compile (or load from the cache) every kernel once, with the argument types the
-    solver uses: the first IK query then pays nothing for it. Idempotent, thread-safe."""
-    global _warmed
-    if _warmed or not _NUMBA:
-        return
-    with _WARM:
-        if _warmed:
-            return
-        k = 1
-        C = np.eye(3)[None].copy()
-        t = np.zeros((1, 3))
-        prism = np.zeros(1, dtype=np.bool_)
-        q = np.zeros(k)
-        lo, hi = np.full(k, -1.0), np.full(k, 1.0)
-        best = np.array([np.inf])
-        consts = (C, t, prism, np.eye(3), np.zeros(3))
-        pose_error(q, *consts, np.eye(3), np.zeros(3))
-        attempt(
-            q.copy(), *consts, lo, hi, prism, np.eye(3), np.zeros(3), q.copy(),
-            True, True, 1e-10, 1e-10, 1, 2, 20, 0.01, 1e-10, 0.2, 100.0, 1e-8, 2.0,
-            best, q.copy(),
-        )  # fmt: skip
-        f32 = np.float32
-        sample_distances(
-            np.zeros((12, 4), f32), np.zeros(4, f32), np.zeros(12, f32), np.empty(4, f32)
-        )
-        CompiledChain(*consts).pose(q)
-        _warmed = True
+    """Compile (or load from the cache) every kernel of this module once, with the argument
+    types the solver uses (a dummy 1-joint chain). Called by
+    :func:`app.kinematics.ik.warmup.warm_up`, which says when all kernels are ready."""
+    k = 1
+    q = np.zeros(k)
+    best = np.array([np.inf])
+    consts = (
+        np.eye(3)[None].copy(),
+        np.zeros((1, 3)),
+        np.zeros(1, dtype=np.bool_),
+        np.eye(3),
+        np.zeros(3),
+    )
+    chain = ChainConstants(*consts, np.full(k, -1.0), np.full(k, 1.0), np.zeros(1, dtype=np.bool_))
+    pose_error(q, chain, np.eye(3), np.zeros(3))
+    step = StepParameters(0.01, 1e-10, 0.2, 100.0, 1e-8, 2.0, 0.81, 2, 20)
+    attempt(
+        q.copy(),
+        chain,
+        np.eye(3),
+        np.zeros(3),
+        q.copy(),
+        True,
+        True,
+        1e-10,
+        1e-10,
+        1,
+        step,
+        best,
+        q.copy(),
+    )
+    f32 = np.float32
+    sample_distances(np.zeros((12, 4), f32), np.zeros(4, f32), np.zeros(12, f32), np.empty(4, f32))
+    CompiledChain(*consts).pose(q)
