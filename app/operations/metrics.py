@@ -30,11 +30,9 @@ import tempfile
 import threading
 import weakref
 from bisect import bisect_left
-from collections.abc import Iterator
 from pathlib import Path
 
 from prometheus_client import CollectorRegistry, generate_latest
-from prometheus_client.metrics_core import Metric
 from prometheus_client.mmap_dict import mmap_key
 from prometheus_client.multiprocess import MultiProcessCollector
 from prometheus_client.utils import floatToGoString
@@ -239,33 +237,9 @@ class Metrics:
             found = workers(self._directory)
             mark_dead_workers(self._directory, found)
         if files.directory is not None:
-            registry.register(_SummedFiles(files.directory))
+            MultiProcessCollector(registry, path=str(files.directory))
         registry.register(WorkersCollector(found))
         return generate_latest(registry)
-
-
-class _SummedFiles:
-    """The library's ``MultiProcessCollector`` over ``directory``, with the ``le`` label of
-    the histogram buckets last (the library sorts labels by name; the series are the same,
-    the text stays as it was: ``{method,route,le}``)."""
-
-    def __init__(self, directory: Path) -> None:
-        self._inner = MultiProcessCollector(None, path=str(directory))
-
-    def collect(self) -> Iterator[Metric]:
-        for metric in self._inner.collect():
-            if metric.type == "histogram":
-                metric.samples = [
-                    s._replace(labels=_le_last(s.labels)) if "le" in s.labels else s
-                    for s in metric.samples
-                ]
-            yield metric
-
-
-def _le_last(labels: dict[str, str]) -> dict[str, str]:
-    out = {k: v for k, v in labels.items() if k != "le"}
-    out["le"] = labels["le"]
-    return out
 
 
 def _status_key(method: str, route: str, status: int) -> str:
