@@ -171,6 +171,7 @@ class Metrics:
             self._directory = None
             self._routes = {}
             self._in_flight = None
+            self._ik = {}
         self._pid = os.getpid()
 
     def enter(self) -> None:

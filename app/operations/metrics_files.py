@@ -7,7 +7,7 @@ the value and a timestamp, 8-byte aligned), read and summed on a scrape by
 :class:`prometheus_client.multiprocess.MultiProcessCollector`.
 
 Why not the library's ``Counter``/``Histogram``/``Gauge`` objects, which write the same
-files: in multiprocess mode they cost about 9 µs per request for the five values a request
+files: in multiprocess mode they cost about 8.3 µs per request for the five values a request
 changes (a lock, ``os.getpid()`` and a 16-byte pack per value, the histogram's bucket scan),
 against about 1.7 µs for the writer here (docs/benchmarks.md, "Metrics by prometheus_client").
 Here an entry is created once through ``MmapedDict`` (so the format is the library's), and
