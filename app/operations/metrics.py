@@ -237,7 +237,7 @@ class Metrics:
         if self._directory is not None:
             found = workers(self._directory)
             mark_dead_workers(self._directory, found)
-        if files.directory is not None:
+        if files.directory is not None and files.directory.is_dir():  # (removed by hand?)
             MultiProcessCollector(registry, path=str(files.directory))
         registry.register(WorkersCollector(found))
         return generate_latest(registry)
