@@ -23,6 +23,7 @@ from app.middleware.observability import ObservabilityMiddleware
 from app.operations.metrics import Metrics
 from app.operations.metrics_files import ValueFiles
 from app.operations.metrics_workers import (
+    instance_directory,
     mark_dead_workers,
     pid_namespace,
     process_start,
@@ -285,3 +286,13 @@ def test_a_forked_child_does_not_write_into_its_parents_files(tmp_path) -> None:
     samples = parse_metrics(me.render().decode())
     assert samples['denavit_http_requests_total{method="GET",route="/x",status="200"}'] == 1
     assert samples["denavit_http_requests_in_flight"] == 0
+
+
+def test_the_instance_directory_lives_under_prometheus_multiproc_dir(tmp_path, monkeypatch) -> None:
+    """The library's variable names the base; each start of a service gets its own,
+    empty, directory in it (named after the owner process: here this one)."""
+    monkeypatch.setenv("PROMETHEUS_MULTIPROC_DIR", str(tmp_path / "prom"))
+    path = instance_directory()
+    assert path.parent == tmp_path / "prom"
+    assert path.name == f"{pid_namespace()}-{os.getpid()}-{process_start(os.getpid())}"
+    assert list(path.iterdir()) == []
