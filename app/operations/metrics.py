@@ -117,7 +117,8 @@ class Metrics:
         """Keep this process's values in the instance directory from now on (default:
         :func:`~app.operations.metrics_workers.instance_directory`), so that a scrape in any
         worker of the instance sums them. Values recorded so far are carried over.
-        Idempotent; raises ``OSError`` when the directory or a file cannot be made."""
+        Idempotent; raises ``OSError`` when the directory or a file cannot be made. One
+        object per process may share a directory (the files are named by pid)."""
         with self._lock:
             if self._directory is not None:
                 return self._directory
