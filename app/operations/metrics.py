@@ -161,18 +161,16 @@ class Metrics:
             return self._files
 
     def _after_fork(self) -> None:
-        """In a forked child: stop writing into the parent's files (the child's values go
-        to a private directory of its own, made on first use)."""
+        """In a forked child: stop writing into the parent's files. The child's values go
+        nowhere (no file: a child that leaves by ``os._exit`` would leave it behind); the
+        service's children (batch IK, reachability builds) record nothing."""
         self._lock = threading.Lock()
         if os.getpid() != self._pid:
             if self._private is not None:
                 self._private.detach()  # the parent's directory: not the child's to remove
                 self._private = None
-            self._files = None
             self._directory = None
-            self._routes = {}
-            self._in_flight = None
-            self._ik = {}
+            self._use(ValueFiles(None))
         self._pid = os.getpid()
 
     def enter(self) -> None:
