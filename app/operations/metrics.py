@@ -1,34 +1,49 @@
-"""Prometheus metrics of the service, summed over its worker processes.
+"""Prometheus metrics of the service, summed over its worker processes by prometheus_client.
 
 ``GET /metrics`` (Prometheus text format 0.0.4) renders :data:`METRICS`: request counts by
 method, route template and status, latency histograms by method and route template,
 requests in flight, IK outcomes (:func:`record_ik`), and per worker (``pid`` label)
-resident memory and CPU time. Each worker records into a memory-mapped file of its own,
-shared by the service's workers (:mod:`app.operations.metrics_shm`; set up when the application
-starts, on the ASGI lifespan): every scrape, whichever worker answers it, sums the counters
-of all the workers, including workers that have died, so totals never go down while the
-service runs. Updates are a few memory-mapped values under a lock (no system call).
+resident memory, CPU time and start time.
+
+The service runs prometheus_client's multiprocess mode: each worker process writes its
+values into the library's per-process files (``counter_<pid>.db``, ...) in the service
+instance's directory (``PROMETHEUS_MULTIPROC_DIR`` of the library;
+:func:`~app.operations.metrics_workers.instance_directory`, shared when the application
+starts, on the ASGI lifespan), and every scrape, whichever worker answers it, sums the files
+of all the workers with :class:`~prometheus_client.multiprocess.MultiProcessCollector`,
+dead workers included, so totals never go down while the service runs. The requests in
+flight are a ``livesum`` gauge: a dead worker's leave the sum
+(:func:`~prometheus_client.multiprocess.mark_process_dead`, called by the scrape). The text
+is the library's :func:`~prometheus_client.exposition.generate_latest`.
+
+Recording does not go through the library's ``Counter``/``Histogram`` objects, which cost
+about 7 µs more per request in multiprocess mode, but writes the same files directly
+(:mod:`app.operations.metrics_files`): a few float64 stores under a lock, no system call.
 """
 
 from __future__ import annotations
 
+import logging
 import os
+import shutil
+import tempfile
 import threading
-import time
 import weakref
 from bisect import bisect_left
 from pathlib import Path
-from typing import Any
 
-import orjson
+from prometheus_client import CollectorRegistry, generate_latest
+from prometheus_client.mmap_dict import mmap_key
+from prometheus_client.multiprocess import MultiProcessCollector
+from prometheus_client.utils import floatToGoString
 
-from app.operations.metrics_shm import (
-    ProcessValues,
-    ValueFile,
+from app.operations.metrics_files import Slot, ValueFiles
+from app.operations.metrics_workers import (
+    WorkersCollector,
     instance_directory,
-    process_lines,
-    process_start,
-    read_directory,
+    mark_dead_workers,
+    register_worker,
+    workers,
 )
 
 #: Upper bounds (s) of the latency histogram buckets (``+Inf`` is implicit).
@@ -50,51 +65,48 @@ LATENCY_BUCKETS: tuple[float, ...] = (
     30.0,
 )
 
+# The families: (metric name, help); the names and help texts are part of the files' keys.
+REQUESTS = ("denavit_http_requests", "HTTP requests by method, route template, status.")
+LATENCY = ("denavit_http_request_duration_seconds", "HTTP request latency (s).")
+IN_FLIGHT = ("denavit_http_requests_in_flight", "HTTP requests being handled (live workers).")
+IK = ("denavit_ik_requests", "IK solves by outcome.")
 
-_NB = len(LATENCY_BUCKETS) + 1  # histogram buckets, +Inf included
-_IN_FLIGHT = orjson.dumps(["g", "in_flight"]).decode()
-_START = orjson.dumps(["g", "start"]).decode()
-_IK = {ok: orjson.dumps(["ik", "success" if ok else "failure"]).decode() for ok in (True, False)}
+_LE = [floatToGoString(b) for b in (*LATENCY_BUCKETS, float("inf"))]
+_log = logging.getLogger("denavit")
 
 
 class _RouteStats:
-    """Value indices of one (method, route template): ``base`` .. ``base + _NB - 1`` the
-    latency buckets, ``base + _NB`` the latency sum; ``statuses`` maps status → count."""
+    """The slots of one (method, route template): its latency buckets (not cumulative; the
+    scrape accumulates them), its latency sum, and a count per status."""
 
-    __slots__ = ("method", "route", "base", "statuses")
+    __slots__ = ("buckets", "sum", "statuses")
 
-    def __init__(self, method: str, route: str, base: int) -> None:
-        self.method = method
-        self.route = route
-        self.base = base
-        self.statuses: dict[int, int] = {}
+    def __init__(self, buckets: list[Slot], total: Slot) -> None:
+        self.buckets = buckets
+        self.sum = total
+        self.statuses: dict[int, Slot] = {}
 
 
 class Metrics:
     """Request counters and latency histograms, rendered as Prometheus text.
 
-    Values live in a :class:`~app.operations.metrics_shm.ValueFile`: anonymous memory until
-    :meth:`share`, then a memory-mapped file of the service instance's directory, which a
-    scrape sums over every worker process (dead ones included for counters, live ones only
-    for gauges). Recording is a few stores under a lock, with no system call.
+    Values live in prometheus_client's multiprocess files
+    (:class:`~app.operations.metrics_files.ValueFiles`): of a private temporary directory
+    (made on first use) until :meth:`share`, then of the service instance's directory,
+    which a scrape sums over every worker process (dead ones included for counters, live
+    ones only for the requests in flight).
     """
 
     def __init__(self) -> None:
         self._lock = threading.Lock()
-        self._file = ValueFile()
-        self._routes: dict[tuple[str, str], _RouteStats] = {}
+        self._files: ValueFiles | None = None
+        self._private: weakref.finalize | None = None
         self._directory: Path | None = None
+        self._routes: dict[tuple[str, str], _RouteStats] = {}
+        self._in_flight: Slot | None = None
+        self._ik: dict[bool, Slot] = {}
         self._pid = os.getpid()
-        self.started = time.time()
-        self._index_fixed()
-        self._file.values[self._start] = self.started
         _AT_FORK.add(self)
-
-    def _index_fixed(self) -> None:
-        f = self._file
-        self._in_flight = f.slot(_IN_FLIGHT)
-        self._start = f.slot(_START)
-        self._ik = {ok: f.slot(key) for ok, key in _IK.items()}
 
     @property
     def directory(self) -> Path | None:
@@ -102,171 +114,162 @@ class Metrics:
         return self._directory
 
     def share(self, directory: Path | None = None) -> Path:
-        """Keep this process's values in ``<directory>/<pid>-<start>.db`` from now on
-        (default directory: :func:`~app.operations.metrics_shm.instance_directory`), so that a
-        scrape
-        in any worker of the instance sums them. Values recorded so far are carried over.
-        Idempotent; raises ``OSError`` when the file cannot be created."""
+        """Keep this process's values in the instance directory from now on (default:
+        :func:`~app.operations.metrics_workers.instance_directory`), so that a scrape in any
+        worker of the instance sums them. Values recorded so far are carried over.
+        Idempotent; raises ``OSError`` when the directory or a file cannot be made. One
+        object per process may share a directory (the files are named by pid)."""
         with self._lock:
             if self._directory is not None:
                 return self._directory
             directory = directory or instance_directory()
-            self._switch(ValueFile(directory / f"{os.getpid()}-{process_start(os.getpid())}.db"))
+            register_worker(directory)
+            new = ValueFiles(directory)
+            if self._files is not None:
+                for (prefix, key), value in self._files.snapshot().items():
+                    new.slot(prefix, key).add(value)
+            self._use(new)
             self._directory = directory
+            if self._private is not None:
+                self._private()  # the private directory is not needed any more
+                self._private = None
             return directory
 
-    def _switch(self, new: ValueFile) -> None:
-        """Copy every value into ``new`` and use it (lock held). The old file is not closed:
-        a request entering in another thread meanwhile writes into it harmlessly."""
-        old = self._file
-        for key, values in old.snapshot().items():
-            i = new.slot(key, len(values))
-            for k, v in enumerate(values):
-                new.values[i + k] = v
-        self._file = new
-        self._index_fixed()
-        for (method, route), stats in self._routes.items():
-            stats.base = new.slots[_route_key(method, route)][0]
-            for status in stats.statuses:
-                stats.statuses[status] = new.slots[_status_key(method, route, status)][0]
+    def _use(self, files: ValueFiles) -> None:
+        """Record into ``files`` from now on (lock held)."""
+        self._files = files
+        self._routes = {}
+        self._ik = {ok: files.slot("counter", _ik_key(ok)) for ok in (True, False)}
+        self._in_flight = files.slot("gauge_livesum", _IN_FLIGHT_KEY)
+
+    def _open(self) -> ValueFiles:
+        """The files recorded into: a private directory's until :meth:`share`."""
+        files = self._files
+        if files is not None:
+            return files
+        with self._lock:
+            if self._files is None:
+                try:
+                    private = tempfile.mkdtemp(prefix="denavit-metrics-local-")
+                except OSError as exc:
+                    _log.warning("metrics are not recorded: no temporary directory (%s)", exc)
+                    self._use(ValueFiles(None))
+                else:
+                    self._private = weakref.finalize(self, shutil.rmtree, private, True)
+                    self._use(ValueFiles(Path(private)))
+            assert self._files is not None
+            return self._files
 
     def _after_fork(self) -> None:
-        """In a forked child: stop writing into the parent's file (values stay readable)."""
+        """In a forked child: stop writing into the parent's files. The child's values go
+        nowhere (no file: a child that leaves by ``os._exit`` would leave it behind); the
+        service's children (batch IK, reachability builds) record nothing."""
         self._lock = threading.Lock()
-        if self._directory is not None and os.getpid() != self._pid:
-            self._switch(ValueFile())
+        if os.getpid() != self._pid:
+            if self._private is not None:
+                self._private.detach()  # the parent's directory: not the child's to remove
+                self._private = None
             self._directory = None
+            self._use(ValueFiles(None))
         self._pid = os.getpid()
-
-    def _route_stats(self, method: str, route: str) -> _RouteStats:
-        stats = self._routes[(method, route)] = _RouteStats(
-            method, route, self._file.slot(_route_key(method, route), _NB + 1)
-        )
-        return stats
 
     def enter(self) -> None:
         """One more request in flight (no lock: called on the event loop thread, like
-        :meth:`finish`; writing :attr:`ValueFile.values` is safe from any thread)."""
-        self._file.values[self._in_flight] += 1.0
+        :meth:`finish`; one store)."""
+        slot = self._in_flight
+        if slot is None:
+            self._open()
+            slot = self._in_flight
+            assert slot is not None
+        slot.view[slot.index] += 1.0
 
     def finish(self, method: str, route: str, status: int, seconds: float) -> None:
         """A request leaves flight: one less in flight, and :meth:`observe` it."""
+        files = self._files or self._open()
         with self._lock:
-            self._file.values[self._in_flight] -= 1.0
-            self._observe(method, route, status, seconds)
+            slot = self._in_flight
+            assert slot is not None
+            slot.view[slot.index] -= 1.0
+            self._observe(files, method, route, status, seconds)
 
     def observe(self, method: str, route: str, status: int, seconds: float) -> None:
         """Count one request of ``route`` (a path template) that took ``seconds``."""
+        files = self._files or self._open()
         with self._lock:
-            self._observe(method, route, status, seconds)
+            self._observe(files, method, route, status, seconds)
 
-    def _observe(self, method: str, route: str, status: int, seconds: float) -> None:
-        stats = self._routes.get((method, route)) or self._route_stats(method, route)
-        i = stats.statuses.get(status)
-        if i is None:
-            i = stats.statuses[status] = self._file.slot(_status_key(method, route, status))
-        values = self._file.values
-        values[i] += 1.0
-        values[stats.base + bisect_left(LATENCY_BUCKETS, seconds)] += 1.0
-        values[stats.base + _NB] += seconds
+    def _observe(
+        self, files: ValueFiles, method: str, route: str, status: int, seconds: float
+    ) -> None:
+        if files is not self._files:  # shared meanwhile
+            files = self._files
+            assert files is not None
+        stats = self._routes.get((method, route))
+        if stats is None:
+            stats = self._routes[(method, route)] = _RouteStats(
+                [files.slot("histogram", k) for k in _bucket_keys(method, route)],
+                files.slot("histogram", _sum_key(method, route)),
+            )
+        slot = stats.statuses.get(status)
+        if slot is None:
+            key = _status_key(method, route, status)
+            slot = stats.statuses[status] = files.slot("counter", key)
+        slot.view[slot.index] += 1.0
+        slot = stats.buckets[bisect_left(LATENCY_BUCKETS, seconds)]
+        slot.view[slot.index] += 1.0
+        slot = stats.sum
+        slot.view[slot.index] += seconds
 
     def record_ik(self, success: bool) -> None:
         """Count one IK solve by outcome."""
+        self._open()
         with self._lock:
-            self._file.values[self._ik[bool(success)]] += 1.0
-
-    def _processes(self) -> list[ProcessValues]:
-        directory = self._directory
-        procs = [] if directory is None else read_directory(directory)
-        if not any(p.pid == os.getpid() for p in procs):  # process-local, or file removed
-            with self._lock:
-                procs.append(ProcessValues(os.getpid(), 0, True, self._file.snapshot()))
-        return procs
+            self._ik[bool(success)].add(1.0)
 
     def render(self) -> bytes:
-        """The Prometheus text exposition (format 0.0.4), summed over the instance's
-        worker processes (see :mod:`app.operations.metrics_shm`)."""
-        procs = self._processes()
-        totals: dict[tuple[Any, ...], list[float]] = {}
-        in_flight = 0.0
-        for proc in procs:
-            for key, values in proc.values.items():
-                parsed = tuple(orjson.loads(key))
-                if parsed[0] == "g":
-                    if parsed == ("g", "in_flight") and proc.alive:
-                        in_flight += values[0]
-                    continue
-                total = totals.get(parsed)
-                if total is None:
-                    totals[parsed] = list(values)
-                elif len(total) == len(values):
-                    totals[parsed] = [a + b for a, b in zip(total, values, strict=True)]
-        out: list[str] = [
-            "# HELP denavit_http_requests_total HTTP requests by method, route template, status.",
-            "# TYPE denavit_http_requests_total counter",
-        ]
-        for key in sorted(k for k in totals if k[0] == "s"):
-            _, method, route, status = key
-            labels = _labels(method=method, route=route, status=str(status))
-            out.append(f"denavit_http_requests_total{labels} {int(totals[key][0])}")
-        out += [
-            "# HELP denavit_http_request_duration_seconds HTTP request latency (s).",
-            "# TYPE denavit_http_request_duration_seconds histogram",
-        ]
-        for key in sorted(k for k in totals if k[0] == "h"):
-            _, method, route = key
-            values = totals[key]
-            if len(values) != _NB + 1:
-                continue
-            cumulative = 0
-            for bound, n in zip((*LATENCY_BUCKETS, float("inf")), values, strict=False):
-                cumulative += int(n)
-                le = "+Inf" if bound == float("inf") else repr(bound)
-                labels = _labels(method=method, route=route, le=le)
-                out.append(f"denavit_http_request_duration_seconds_bucket{labels} {cumulative}")
-            labels = _labels(method=method, route=route)
-            out.append(f"denavit_http_request_duration_seconds_sum{labels} {values[_NB]!r}")
-            out.append(f"denavit_http_request_duration_seconds_count{labels} {cumulative}")
-        ik = {r: int(totals.get(("ik", r), [0.0])[0]) for r in ("success", "failure")}
-        live = [p for p in procs if p.alive]
-        out += [
-            "# HELP denavit_http_requests_in_flight HTTP requests being handled (live workers).",
-            "# TYPE denavit_http_requests_in_flight gauge",
-            f"denavit_http_requests_in_flight {int(in_flight)}",
-            "# HELP denavit_ik_requests_total IK solves by outcome.",
-            "# TYPE denavit_ik_requests_total counter",
-            f'denavit_ik_requests_total{{result="success"}} {ik["success"]}',
-            f'denavit_ik_requests_total{{result="failure"}} {ik["failure"]}',
-            "# HELP denavit_worker_processes Worker processes whose counters are summed here.",
-            "# TYPE denavit_worker_processes gauge",
-            f'denavit_worker_processes{{state="live"}} {len(live)}',
-            f'denavit_worker_processes{{state="exited"}} {len(procs) - len(live)}',
-            "# HELP denavit_process_info The worker process answering this scrape.",
-            "# TYPE denavit_process_info gauge",
-            f'denavit_process_info{{pid="{os.getpid()}"}} 1',
-        ]
-        out += process_lines(live, _START)
-        return ("\n".join(out) + "\n").encode()
-
-
-def _route_key(method: str, route: str) -> str:
-    return orjson.dumps(["h", method, route]).decode()
+        """The Prometheus text exposition (format 0.0.4) of the instance's worker processes:
+        their files summed by ``MultiProcessCollector``, and the workers themselves
+        (:class:`~app.operations.metrics_workers.WorkersCollector`)."""
+        files = self._open()
+        registry = CollectorRegistry(auto_describe=False)
+        found = []
+        if self._directory is not None:
+            found = workers(self._directory)
+            mark_dead_workers(self._directory, found)
+        if files.directory is not None and files.directory.is_dir():  # (removed by hand?)
+            MultiProcessCollector(registry, path=str(files.directory))
+        registry.register(WorkersCollector(found))
+        return generate_latest(registry)
 
 
 def _status_key(method: str, route: str, status: int) -> str:
-    return orjson.dumps(["s", method, route, status]).decode()
+    name, help_text = REQUESTS
+    labels = ["method", "route", "status"]
+    return mmap_key(name, name + "_total", labels, [method, route, str(status)], help_text)
 
 
-def _escape(value: str) -> str:
-    return value.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+def _bucket_keys(method: str, route: str) -> list[str]:
+    name, help_text = LATENCY
+    labels = ["method", "route", "le"]
+    return [mmap_key(name, name + "_bucket", labels, [method, route, le], help_text) for le in _LE]
 
 
-def _labels(**labels: str) -> str:
-    return "{" + ",".join(f'{k}="{_escape(v)}"' for k, v in labels.items()) + "}"
+def _sum_key(method: str, route: str) -> str:
+    name, help_text = LATENCY
+    return mmap_key(name, name + "_sum", ["method", "route"], [method, route], help_text)
+
+
+def _ik_key(success: bool) -> str:
+    name, help_text = IK
+    result = "success" if success else "failure"
+    return mmap_key(name, name + "_total", ["result"], [result], help_text)
+
+
+_IN_FLIGHT_KEY = mmap_key(IN_FLIGHT[0], IN_FLIGHT[0], [], [], IN_FLIGHT[1])
 
 
 class _ForkHooks:
-    """Metrics objects to detach from their parent's file in a forked child."""
+    """Metrics objects to detach from their parent's files in a forked child."""
 
     def __init__(self) -> None:
         self._refs: list[weakref.ref[Metrics]] = []

@@ -1,7 +1,8 @@
-"""/metrics sums the counters of every worker process of the service (app.operations.metrics_shm):
-a live 2-worker server, where every scrape must report the service's totals, whichever
-worker answers, and never less than before (a killed worker's counters included); and the
-shared value files themselves."""
+"""/metrics sums the counters of every worker process of the service (prometheus_client's
+multiprocess files, app.operations.metrics_files and metrics_workers): a live 2-worker
+server, where every scrape must report the service's totals, whichever worker answers, and
+never less than before (a killed worker's counters included); and the files themselves,
+written here and read by the library."""
 
 from __future__ import annotations
 
@@ -16,20 +17,21 @@ from pathlib import Path
 from typing import Any
 
 import httpx
-import pytest
+from prometheus_client.mmap_dict import MmapedDict
 
 from app.middleware.observability import ObservabilityMiddleware
 from app.operations.metrics import Metrics
-from app.operations.metrics_shm import (
-    INITIAL_SIZE,
-    ValueFile,
+from app.operations.metrics_files import ValueFiles
+from app.operations.metrics_workers import (
+    instance_directory,
+    mark_dead_workers,
     pid_namespace,
     process_start,
-    read_directory,
-    read_values,
+    register_worker,
     remove_stale_instances,
+    workers,
 )
-from tests.helpers import parse_metrics, serve
+from tests.helpers import ROOT, parse_metrics, serve
 
 ROBOTS_200 = 'denavit_http_requests_total{method="GET",route="/robots",status="200"}'
 ROBOTS_COUNT = 'denavit_http_request_duration_seconds_count{method="GET",route="/robots"}'
@@ -162,48 +164,93 @@ def test_a_request_is_counted_before_its_last_byte_is_sent() -> None:
     assert seen == [0, 1]  # not after the first part, before the last one
 
 
-def test_value_file_grows_and_readers_see_every_value(tmp_path) -> None:
-    f = ValueFile(tmp_path / "1-1.db")
-    early = f.values  # a view fetched before the file grows
-    first = f.slot('["first"]', 3)
-    keys = [f'["key", {i}, "{"x" * 40}"]' for i in range(2000)]  # > INITIAL_SIZE in all
+def _values(path: Path) -> dict[str, float]:
+    """Key → value of one value file, read by prometheus_client's own reader."""
+    return {k: v for k, v, _, _ in MmapedDict.read_all_values_from_file(str(path))}
+
+
+def test_values_written_here_are_read_by_the_library_also_after_the_file_grows(
+    tmp_path,
+) -> None:
+    files = ValueFiles(tmp_path)
+    early = files.slot("counter", '["first"]')  # a slot taken before the file grows
+    keys = [f'["key", {i}, "{"x" * 60}"]' for i in range(20_000)]  # > 1 MiB of entries
     for i, key in enumerate(keys):
-        index = f.slot(key)  # first: it may replace f.values
-        f.values[index] = float(i)
-    assert (tmp_path / "1-1.db").stat().st_size > INITIAL_SIZE
-    early[first + 2] = 7.0  # writes through an old view land in the same file
-    got = read_values(tmp_path / "1-1.db")
-    assert got['["first"]'] == [0.0, 0.0, 7.0]
-    assert [got[k][0] for k in keys] == [float(i) for i in range(2000)]
-    assert f.snapshot() == got
+        files.slot("counter", key).add(float(i))
+    path = tmp_path / f"counter_{os.getpid()}.db"
+    assert path.stat().st_size > 1 << 20  # the library's initial size: it grew
+    early.add(7.0)  # writes through a view of the first mapping land in the same file
+    got = _values(path)
+    assert got['["first"]'] == 7.0
+    assert [got[k] for k in keys] == [float(i) for i in range(20_000)]
+    assert files.snapshot() == {("counter", k): v for k, v in got.items()}
+
+
+_DEAD_WORKER = """
+import sys
+from pathlib import Path
+from app.operations.metrics import Metrics
+m = Metrics()
+m.share(Path(sys.argv[1]))
+for _ in range(4):
+    m.observe("GET", "/x", 200, 0.002)
+m.observe("GET", "/x", 500, 0.002)
+m.record_ik(True)
+m.record_ik(True)
+for _ in range(3):
+    m.enter()  # it dies with 3 requests in flight
+"""
 
 
 def test_scrape_sums_live_and_dead_workers_but_gauges_only_live(tmp_path) -> None:
+    dead = subprocess.run([sys.executable, "-c", _DEAD_WORKER, str(tmp_path)], cwd=ROOT)
+    assert dead.returncode == 0  # it has exited and been reaped
+    dead_pid = next(w.pid for w in workers(tmp_path))
     me = Metrics()
     me.share(tmp_path)
     me.observe("GET", "/x", 200, 0.002)
     me.record_ik(True)
     me.enter()
-    dead = ValueFile(tmp_path / f"{_reaped_pid()}-12345.db")
-    for key, value in [
-        ('["s","GET","/x",200]', 4.0),
-        ('["s","GET","/x",500]', 1.0),
-        ('["ik","success"]', 2.0),
-        ('["g","in_flight"]', 3.0),  # it died with requests in flight
-    ]:
-        index = dead.slot(key)
-        dead.values[index] = value
-    text = me.render().decode()
-    samples = parse_metrics(text)
+    samples = parse_metrics(me.render().decode())
     assert samples['denavit_http_requests_total{method="GET",route="/x",status="200"}'] == 5
     assert samples['denavit_http_requests_total{method="GET",route="/x",status="500"}'] == 1
+    assert samples['denavit_http_request_duration_seconds_count{method="GET",route="/x"}'] == 6
     assert samples['denavit_ik_requests_total{result="success"}'] == 3
     assert samples["denavit_http_requests_in_flight"] == 1
     assert samples['denavit_worker_processes{state="live"}'] == 1
     assert samples['denavit_worker_processes{state="exited"}'] == 1
     assert f'process_resident_memory_bytes{{pid="{os.getpid()}"}}' in samples
-    assert not any("12345" in k or f'pid="{dead.path.stem.split("-")[0]}"' in k for k in samples)
-    assert {p.alive for p in read_directory(tmp_path)} == {True, False}
+    assert not any(f'pid="{dead_pid}"' in k for k in samples)
+    assert {w.alive for w in workers(tmp_path)} == {True, False}
+
+
+def test_a_dead_workers_pid_reused_by_a_live_one_keeps_the_live_ones_gauge(tmp_path) -> None:
+    """Markers carry the start time: the dead process that had this pid is told apart from
+    this one, and marking it dead must not drop this process's requests in flight."""
+    me = Metrics()
+    me.share(tmp_path)
+    (tmp_path / f"{os.getpid()}-12345.worker").touch()  # an earlier process with this pid
+    me.enter()
+    found = workers(tmp_path)
+    assert sorted(w.alive for w in found) == [False, True]
+    mark_dead_workers(tmp_path, found)
+    samples = parse_metrics(me.render().decode())
+    assert samples["denavit_http_requests_in_flight"] == 1
+    assert samples['denavit_worker_processes{state="exited"}'] == 1
+
+
+def test_a_worker_with_a_dead_ones_pid_starts_with_nothing_in_flight(tmp_path) -> None:
+    """A dead process with this pid left 3 requests in flight in its ``livesum`` file: a new
+    worker must not count them as its own."""
+    stale = MmapedDict(str(tmp_path / f"gauge_livesum_{os.getpid()}.db"))
+    key = '["denavit_http_requests_in_flight", "denavit_http_requests_in_flight", {}, '
+    key += '"HTTP requests being handled (live workers)."]'
+    stale.write_value(key, 3.0, 0.0)
+    stale.close()
+    register_worker(tmp_path)
+    me = Metrics()
+    me.share(tmp_path)
+    assert parse_metrics(me.render().decode())["denavit_http_requests_in_flight"] == 0
 
 
 def test_directories_of_stopped_services_are_removed(tmp_path) -> None:
@@ -219,19 +266,33 @@ def test_directories_of_stopped_services_are_removed(tmp_path) -> None:
     )
 
 
-@pytest.mark.skipif(not hasattr(os, "fork"), reason="fork")
-def test_a_forked_child_does_not_write_into_its_parents_file(tmp_path) -> None:
+def test_a_forked_child_does_not_write_into_its_parents_files(tmp_path) -> None:
     me = Metrics()
     me.share(tmp_path)
     me.observe("GET", "/x", 200, 0.002)
+    before = sorted(p.name for p in tmp_path.iterdir())
     pid = os.fork()
     if pid == 0:  # the child: count 10 requests, then leave without clean-up
         try:
             for _ in range(10):
-                me.observe("GET", "/x", 200, 0.002)
+                me.enter()
+                me.finish("GET", "/x", 200, 0.002)
         finally:
             os._exit(0)
     os.waitpid(pid, 0)
-    files = {p.name: read_values(p) for p in Path(tmp_path).iterdir()}
-    assert list(files) == [f"{os.getpid()}-{process_start(os.getpid())}.db"]
-    assert next(iter(files.values()))['["s","GET","/x",200]'] == [1.0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    got = _values(tmp_path / f"counter_{os.getpid()}.db")
+    assert [v for k, v in got.items() if '"/x"' in k] == [1.0]
+    samples = parse_metrics(me.render().decode())
+    assert samples['denavit_http_requests_total{method="GET",route="/x",status="200"}'] == 1
+    assert samples["denavit_http_requests_in_flight"] == 0
+
+
+def test_the_instance_directory_lives_under_prometheus_multiproc_dir(tmp_path, monkeypatch) -> None:
+    """The library's variable names the base; each start of a service gets its own,
+    empty, directory in it (named after the owner process: here this one)."""
+    monkeypatch.setenv("PROMETHEUS_MULTIPROC_DIR", str(tmp_path / "prom"))
+    path = instance_directory()
+    assert path.parent == tmp_path / "prom"
+    assert path.name == f"{pid_namespace()}-{os.getpid()}-{process_start(os.getpid())}"
+    assert list(path.iterdir()) == []

@@ -1,5 +1,5 @@
 """GET /metrics: Prometheus text exposition of the service's counters, summed over its worker
-processes (see app.middleware.observability and app.operations.metrics_shm)."""
+processes (see app.middleware.observability and app.operations.metrics)."""
 
 from __future__ import annotations
 
