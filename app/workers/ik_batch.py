@@ -2,8 +2,9 @@
 
 A batch whose targets all start from the same seed (``chain_seeds: false``) is a set of
 independent solves, so it can be spread over worker processes (the solve is mostly Python:
-threads would share one core). :class:`BatchPool` keeps a warm
-:class:`~concurrent.futures.ProcessPoolExecutor` (forkserver; made on first use) whose
+threads would share one core). :class:`BatchPool` (one per app, made by its lifespan,
+:mod:`app.api.state`) keeps a warm :class:`~concurrent.futures.ProcessPoolExecutor`
+(forkserver; made on first use) whose
 workers rebuild each robot from what its :class:`~app.kinematics.models.RobotModel` was built
 from (URDF text, package directories, SRDF, end effector; cached per robot id and a digest
 of those, so a replaced robot is rebuilt) and solve chunks of consecutive targets; the
@@ -40,12 +41,12 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, CancelledError, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, UnavailableError
+from app.kinematics.ik import IKResult
 from app.kinematics.ik.batch import BatchTask, solve_targets
 from app.kinematics.ik.compiled import warm_up
 from app.kinematics.models import RobotModel
@@ -135,7 +136,7 @@ def _worker_robot(recipe: RobotRecipe) -> RobotModel:
 
 def _worker_chunk(
     recipe: RobotRecipe, matrices: np.ndarray, start: int, task: BatchTask
-) -> list[dict[str, Any]]:
+) -> list[IKResult]:
     """Targets ``start`` … of a batch (homogeneous matrices, root frame) in a worker."""
     robot = _worker_robot(recipe)
     targets = [pin.SE3(np.ascontiguousarray(T)) for T in matrices]
@@ -192,7 +193,7 @@ class BatchPool:
         *,
         cancel: threading.Event | None = None,
         record: Callable[[bool], None] | None = None,
-    ) -> list[dict[str, Any]]:
+    ) -> list[IKResult]:
         """Every target solved from ``task.seed``, in order (as :func:`solve_targets`): in the
         workers when there are several and at least :data:`MIN_PARALLEL` targets, else here.
 
@@ -216,7 +217,7 @@ class BatchPool:
                 futures.append(
                     executor.submit(_worker_chunk, recipe, matrices[a : a + size], a, task)
                 )
-            out: list[dict[str, Any]] = []
+            out: list[IKResult] = []
             for fut in futures:
                 while True:
                     if cancel is not None and cancel.is_set():
@@ -226,8 +227,8 @@ class BatchPool:
                     wait([fut], timeout=POLL_S, return_when=FIRST_COMPLETED)
                 part = fut.result()
                 if record is not None:
-                    for entry in part:
-                        record(entry["success"])
+                    for res in part:
+                        record(res.success)
                 out.extend(part)
             return out
         except BrokenProcessPool:
@@ -243,28 +244,3 @@ class BatchPool:
         finally:
             for fut in futures:
                 fut.cancel()
-
-
-_POOL: BatchPool | None = None
-_POOL_LOCK = threading.Lock()
-
-
-def batch_pool(processes: int) -> BatchPool:
-    """This process's pool of ``processes`` workers (one at a time: a different size
-    replaces it)."""
-    global _POOL
-    with _POOL_LOCK:
-        if _POOL is None or _POOL.processes != processes:
-            if _POOL is not None:
-                _POOL.shutdown()
-            _POOL = BatchPool(processes)
-        return _POOL
-
-
-def shutdown_pool() -> None:
-    """Stop this process's batch workers, if any (at application shutdown)."""
-    global _POOL
-    with _POOL_LOCK:
-        pool, _POOL = _POOL, None
-    if pool is not None:
-        pool.shutdown()

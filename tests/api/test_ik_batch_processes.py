@@ -99,16 +99,16 @@ def _same(results: list[dict], reference: list[dict]) -> None:
 
 @pytest.fixture
 def pooled(tmp_path: Path):
-    """A client whose server solves batches in 2 worker processes; the pool stopped after."""
+    """A client whose server solves batches in 2 worker processes (the app's pool, stopped
+    by its lifespan)."""
     app = create_app(Settings(data_dir=tmp_path / "data", ik_batch_processes=2))
     with TestClient(app, raise_server_exceptions=False) as c:
         yield c
-    ik_batch.shutdown_pool()
 
 
-def _pool_pids() -> list[int]:
-    pool = ik_batch._POOL
-    executor = None if pool is None else pool._executor
+def _pool_pids(client: TestClient) -> list[int]:
+    pool = client.app.state.services.ik_batch
+    executor = pool._executor
     return [] if executor is None else list(executor._processes)
 
 
@@ -118,7 +118,7 @@ def test_two_processes_answer_as_each_target_alone(pooled, registry, robot_id, f
     targets = _targets(robot, frame, 40, seed=3)
     r = pooled.post(f"/robots/{robot_id}/ik/batch", json=_body(robot, frame, targets))
     assert r.status_code == 200, r.text
-    assert len(_pool_pids()) == 2  # the batch went through the worker processes
+    assert len(_pool_pids(pooled)) == 2  # the batch went through the worker processes
     out = r.json()
     _same(out["results"], _reference(robot, frame, targets))
     assert out["solved"] == sum(x["success"] for x in out["results"]) >= 38
@@ -132,7 +132,7 @@ def test_chunk_boundaries_do_not_change_answers(pooled, registry, monkeypatch) -
     targets = _targets(robot, "panda_link8", 11, seed=5)
     r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", targets))
     assert r.status_code == 200, r.text
-    assert len(_pool_pids()) == 2
+    assert len(_pool_pids(pooled)) == 2
     _same(r.json()["results"], _reference(robot, "panda_link8", targets))
 
 
@@ -142,7 +142,7 @@ def test_collision_aware_batch_in_the_pool(pooled, registry) -> None:
     body = _body(robot, "panda_link8", targets, avoid_collisions=True, obstacles=[BOX])
     r = pooled.post("/robots/panda/ik/batch", json=body)
     assert r.status_code == 200, r.text
-    assert len(_pool_pids()) == 2
+    assert len(_pool_pids(pooled)) == 2
     accept = collision_filter(robot, parse_obstacles([BOX]), margin=0.0, mode="mesh")
     _same(r.json()["results"], _reference(robot, "panda_link8", targets, accept))
 
@@ -183,9 +183,9 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
     )
     thread.start()
     event = threading.Event()
-    while not _pool_pids() and thread.is_alive():
+    while not _pool_pids(pooled) and thread.is_alive():
         event.wait(0.01)
-    pids = _pool_pids()
+    pids = _pool_pids(pooled)
     assert pids, answer
     os.kill(pids[0], signal.SIGKILL)
     thread.join(timeout=120)
@@ -194,7 +194,7 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
     good = _targets(robot, "panda_link8", 34, seed=4)
     r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", good))
     assert r.status_code == 200, r.text
-    assert pids[0] not in _pool_pids() and len(_pool_pids()) == 2
+    assert pids[0] not in _pool_pids(pooled) and len(_pool_pids(pooled)) == 2
 
 
 def _ik_failures(client: httpx.Client) -> float:

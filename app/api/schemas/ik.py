@@ -7,8 +7,8 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, Field
 
-from app.api.routes.scenes import ObstacleIn
 from app.api.schemas.common import Finite, Matrix4, Position3, Quat, Schema, group_field
+from app.api.schemas.scenes import ObstacleIn
 
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
