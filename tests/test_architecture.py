@@ -5,6 +5,9 @@
 - A module longer than :data:`MAX_LINES` says why in its docstring, in a paragraph starting
   ``Why one module:``.
 - No test module imports another test module (shared helpers live in helper modules).
+- A route module (``app/api/routes/<area>.py``) holds routes only: it imports no other
+  route module (what routes share lives in plumbing modules beside them, ``app/api/*.py``)
+  and defines no pydantic model (wire models live in ``app/api/schemas/<area>.py``).
 
 Imports are read from the syntax tree, so imports inside functions and ``TYPE_CHECKING``
 blocks count too, and a name in a docstring or a comment does not.
@@ -13,9 +16,13 @@ blocks count too, and a name in a docstring or a comment does not.
 from __future__ import annotations
 
 import ast
+import importlib
+import inspect
 from pathlib import Path
+from types import ModuleType
 
 import pytest
+from pydantic import BaseModel
 
 ROOT = Path(__file__).resolve().parents[1]
 MAX_LINES = 500
@@ -77,6 +84,40 @@ def test_core_imports_nothing_from_the_app_outside_the_core(path: Path) -> None:
 def test_dh2urdf_imports_nothing_from_the_app(path: Path) -> None:
     bad = sorted(m for m in imported(path) if m == "app" or m.startswith("app."))
     assert not bad, f"{_rel(path)} imports {bad}"
+
+
+ROUTES = "app.api.routes"
+
+
+def _route_modules() -> list[Path]:
+    return [p for p in _modules("app/api/routes") if p.name != "__init__.py"]
+
+
+@pytest.mark.parametrize("path", _route_modules(), ids=_rel)
+def test_no_route_module_imports_another_route_module(path: Path) -> None:
+    bad = sorted(m for m in imported(path) if m == ROUTES or m.startswith(ROUTES + "."))
+    assert not bad, f"{_rel(path)} imports {bad}: share it from a module beside the routes"
+
+
+def wire_models(module: ModuleType) -> list[str]:
+    """The pydantic models ``module`` defines (not those it imports)."""
+    return sorted(
+        name
+        for name, obj in vars(module).items()
+        if inspect.isclass(obj) and issubclass(obj, BaseModel) and obj.__module__ == module.__name__
+    )
+
+
+@pytest.mark.parametrize("path", _route_modules(), ids=_rel)
+def test_no_route_module_defines_a_wire_model(path: Path) -> None:
+    found = wire_models(importlib.import_module(_package(path)))
+    assert not found, f"{_rel(path)} defines {found}: wire models go in app/api/schemas/"
+
+
+def test_the_model_reader_sees_models_defined_and_not_imported() -> None:
+    fk = importlib.import_module("app.api.schemas.fk")
+    assert {"FKRequest", "FKResponse", "FKBatchRequest"} <= set(wire_models(fk))
+    assert "ConfigurationIn" not in wire_models(fk)  # imported from schemas.common
 
 
 @pytest.mark.parametrize("path", _modules("app", "dh2urdf", "robots"), ids=_rel)

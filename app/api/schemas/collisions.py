@@ -9,9 +9,10 @@ from pydantic import BaseModel, Field, Strict
 
 from app.api.schemas.common import ConfigurationIn, JointValue, Schema, Vec3Out, group_field
 from app.api.schemas.scenes import ObstacleIn
+from app.kinematics.collision import GEOMETRY_MODES
 from app.kinematics.obstacles import MAX_OBSTACLES
 
-GeometryMode = Literal["mesh", "convex"]
+GeometryMode = Literal[GEOMETRY_MODES]
 Margin = Annotated[float, Strict(), Field(ge=0.0, le=10.0, allow_inf_nan=False)]
 Flag = Annotated[bool, Strict()]
 

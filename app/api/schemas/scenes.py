@@ -10,7 +10,7 @@ from fastapi import Path
 from pydantic import BaseModel, Field, Strict
 
 from app.api.schemas.common import Quat, Schema, Text, Vec3, Vec3Out
-from app.kinematics.obstacles import MAX_NAME_LENGTH, MAX_OBSTACLES
+from app.kinematics.obstacles import MAX_NAME_LENGTH, MAX_OBSTACLES, SHAPES
 from app.storage.scenes import MAX_DESCRIPTION, NAME_PATTERN
 
 #: A finite, strictly positive length (m).
@@ -35,7 +35,7 @@ class ObstacleIn(Schema):
     name: Text = Field(
         min_length=1, max_length=MAX_NAME_LENGTH, description="Unique name in the set."
     )
-    shape: Literal["box", "sphere", "cylinder", "capsule"] = Field(description="Solid type.")
+    shape: Literal[SHAPES] = Field(description="Solid type.")
     size: Annotated[list[PositiveLength], Field(min_length=3, max_length=3)] | None = Field(
         None, description="box: full edge lengths [x, y, z] (m)."
     )

@@ -8,6 +8,7 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, Field
 
 from app.api.schemas.common import ConfigurationIn, Finite
+from app.kinematics.ik.problem import Mode
 from app.kinematics.velocity import MAX_DAMPING, MAX_RATE, SINGULAR_THRESHOLD
 
 #: A rate (rad/s, m/s) within ±MAX_RATE.
@@ -37,7 +38,7 @@ class VelocityRequest(ConfigurationIn):
     twist: Twist | None = Field(
         None, description="Inverse: [vx, vy, vz, wx, wy, wz] (m/s, rad/s) to realise."
     )
-    mode: Literal["pose", "position", "orientation"] = Field(
+    mode: Mode = Field(
         "pose",
         description="Inverse only: task rows to match (position: vx, vy, vz only; "
         "orientation: wx, wy, wz only).",
