@@ -4,7 +4,7 @@
 and closes it at shutdown; routes reach its parts through the typed dependencies of
 :mod:`app.api.deps` (or :func:`services` where they hold a connection, as the stream and the
 work-pool helpers of :mod:`app.api.offload` do). Nothing here is made on first use: an app
-whose lifespan has not run answers 503 (:class:`NotStartedError`) where it would need them.
+whose lifespan has not run answers 503 (``UnavailableError``) where it would need them.
 """
 
 from __future__ import annotations
@@ -24,11 +24,8 @@ from app.workers import default_processes
 from app.workers.ik_batch import BatchPool
 
 
-class NotStartedError(UnavailableError):
-    """The app's lifespan has not run (or has ended): its stores and pools do not exist."""
-
-    def __init__(self) -> None:
-        super().__init__("the service is not started (its lifespan has not run)", None)
+#: The error of a request that needs the services of an app whose lifespan has not run.
+NOT_STARTED = "the service is not started (its lifespan has not run, or has ended)"
 
 
 @dataclass(frozen=True, slots=True)
@@ -91,10 +88,10 @@ def services(conn: HTTPConnection) -> Services:
 
     Raises
     ------
-    NotStartedError
-        The app's lifespan has not run.
+    UnavailableError
+        The app's lifespan has not run (503).
     """
     found = getattr(conn.app.state, "services", None)
     if found is None:
-        raise NotStartedError()
+        raise UnavailableError(NOT_STARTED)
     return found
