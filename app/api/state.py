@@ -23,7 +23,6 @@ from app.storage.scenes import SceneStore
 from app.workers import default_processes
 from app.workers.ik_batch import BatchPool
 
-
 #: The error of a request that needs the services of an app whose lifespan has not run.
 NOT_STARTED = "the service is not started (its lifespan has not run, or has ended)"
 

@@ -36,6 +36,8 @@ from __future__ import annotations
 import hashlib
 import math
 import multiprocessing
+import multiprocessing.forkserver
+import queue
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, CancelledError, Future, ProcessPoolExecutor, wait
@@ -150,6 +152,44 @@ def chunk_size(n: int, processes: int, timeout_ms: float) -> int:
     return max(1, min(size, math.floor(CHUNK_BUDGET_MS / timeout_ms)))
 
 
+_STARTER: queue.SimpleQueue[Future[None]] | None = None
+_STARTER_LOCK = threading.Lock()
+
+
+def _starter(requests: queue.SimpleQueue[Future[None]]) -> None:
+    while True:
+        done = requests.get()
+        try:
+            multiprocessing.forkserver.ensure_running()
+        except BaseException as exc:  # noqa: BLE001 - handed to the caller
+            done.set_exception(exc)
+        else:
+            done.set_result(None)
+
+
+def ensure_forkserver() -> None:
+    """Start this process's forkserver, if it is not running, from a thread that lives as
+    long as the process.
+
+    The forkserver dies with the *thread* that started it: :mod:`app.workers.forkserver_init`
+    sets ``PR_SET_PDEATHSIG``, whose "parent" is the starting thread. Started by a thread of
+    an app's compute pool (the thread that submits a batch), it would die when that app's
+    lifespan stops its pool, and a later pool of the process (another app, a restarted
+    lifespan) would find it gone.
+    """
+    global _STARTER
+    with _STARTER_LOCK:
+        if _STARTER is None:
+            _STARTER = queue.SimpleQueue()
+            threading.Thread(
+                target=_starter, args=(_STARTER,), name="forkserver-starter", daemon=True
+            ).start()
+        requests = _STARTER
+    done: Future[None] = Future()
+    requests.put(done)
+    done.result()
+
+
 class BatchPool:
     """Worker processes for batch IK; ``processes`` = 1 solves in the calling thread."""
 
@@ -162,9 +202,10 @@ class BatchPool:
 
     def _pool(self) -> ProcessPoolExecutor:
         with self._lock:
+            ctx = multiprocessing.get_context("forkserver")
+            ctx.set_forkserver_preload(["app.workers.forkserver_init", "app.workers.ik_batch"])
+            ensure_forkserver()  # the workers fork from it as they start, on submit
             if self._executor is None:
-                ctx = multiprocessing.get_context("forkserver")
-                ctx.set_forkserver_preload(["app.workers.forkserver_init", "app.workers.ik_batch"])
                 self._executor = ProcessPoolExecutor(
                     self.processes, mp_context=ctx, initializer=_worker_init
                 )

@@ -235,3 +235,51 @@ def test_a_replaced_robot_is_rebuilt_in_the_workers(registry) -> None:
     assert ik_batch.RobotRecipe.of(RobotModel("arm", panda.urdf_text)).key != a.key  # dirs
     rebuilt = b.build()
     assert rebuilt.joint_names == ur5.joint_names and rebuilt.urdf_text == ur5.urdf_text
+
+
+#: Run in a fresh interpreter (no forkserver yet): a pool used from a short-lived thread (as
+#: an app's compute pool thread, stopped with its app) until a worker has forked (so the
+#: forkserver has set its death signal), then the forkserver's state once that thread has
+#: left the kernel's task list.
+_FORKSERVER_PROBE = """
+import json, multiprocessing.forkserver, os, threading, time
+from app.workers.ik_batch import BatchPool
+
+pool = BatchPool(2)
+t = threading.Thread(target=lambda: pool._pool().submit(int).result())  # a worker forked
+t.start()
+t.join()
+end = time.monotonic() + 60
+while os.path.exists(f"/proc/self/task/{t.native_id}") and time.monotonic() < end:
+    time.sleep(0.01)
+pid = multiprocessing.forkserver._forkserver._forkserver_pid
+with open(f"/proc/{pid}/stat") as f:
+    state = f.read().rpartition(")")[2].split()[0]
+with open(f"/proc/{pid}/status") as f:
+    pending = {k: int(v, 16) for k, _, v in (line.partition(":") for line in f)
+               if k in ("SigPnd", "ShdPnd")}
+print(json.dumps({"state": state, "kill_pending": any(v >> 8 & 1 for v in pending.values())}))
+pool.shutdown()
+"""
+
+
+def test_the_forkserver_outlives_the_thread_that_started_the_pool() -> None:
+    """The forkserver dies with the thread that started it (``PR_SET_PDEATHSIG``): a pool
+    first used from a thread that ends (an app's compute pool, stopped by its lifespan)
+    must not take it down, else the next pool of the process finds it gone. Checked
+    without timing: once the thread has left the kernel's task list, its death signal
+    has been sent, so the forkserver is either still clean or already doomed."""
+    import json
+    import subprocess
+    import sys
+
+    out = subprocess.run(
+        [sys.executable, "-c", _FORKSERVER_PROBE],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+        cwd=Path(__file__).resolve().parents[2],
+    )
+    seen = json.loads(out.stdout.strip().splitlines()[-1])
+    assert seen["state"] in ("R", "S", "D") and not seen["kill_pending"], seen  # alive, clean
