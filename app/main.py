@@ -30,6 +30,7 @@ from starlette.middleware.cors import CORSMiddleware
 
 from app.api import errors, static_files
 from app.api.routes import ROUTERS, docs_pages, metrics, viewer
+from app.api.state import open_services
 from app.kinematics.ik.warmup import warm_up as warm_up_ik
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.xmldoc import XmlLimits
@@ -48,7 +49,6 @@ from app.robots.documents.xacro import XacroLimits
 from app.robots.registry import Registry
 from app.storage.store import remove_stale_temporaries
 from app.workers import procwatch
-from app.workers.ik_batch import shutdown_pool as stop_ik_batch_workers
 
 DESCRIPTION = """\
 Kinematics of robot arms over HTTP: forward kinematics, Jacobians, inverse kinematics,
@@ -69,7 +69,9 @@ log = logging.getLogger("denavit")
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-    """Start-up: JSON logging, data directory ready; shutdown: a last log line.
+    """Start-up: JSON logging, data directory ready, the app's stores and work pools made
+    (:class:`~app.api.state.Services`, ``app.state.services``); shutdown: builds cancelled,
+    pools and batch IK workers stopped, a last log line.
 
     In-flight requests are finished by uvicorn before shutdown runs (SIGTERM, up to
     ``DENAVIT_GRACEFUL_TIMEOUT_S``).
@@ -95,9 +97,13 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     # Compile the IK kernels in the background: the first IK request does not wait for it.
     threading.Thread(target=warm_up_ik, name="ik-warm-up", daemon=True).start()
     procwatch.exit_with_supervisor(settings.graceful_timeout_s + 5)  # no worker outlives it
-    yield
-    stop_ik_batch_workers()
-    log.info("denavit stopped")
+    services = app.state.services = open_services(settings)
+    try:
+        yield
+    finally:
+        app.state.services = None
+        services.close()
+        log.info("denavit stopped")
 
 
 def upload_limits(settings: Settings) -> UploadLimits:
@@ -132,7 +138,8 @@ def upload_limits(settings: Settings) -> UploadLimits:
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
-    """Build the application (robots are loaded lazily, on first use)."""
+    """Build the application (robots are loaded lazily, on first use); its stores and work
+    pools are made when its lifespan starts (:func:`lifespan`)."""
     settings = settings or get_settings()
     app = FastAPI(
         title="Denavit",

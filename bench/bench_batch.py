@@ -68,7 +68,7 @@ def rates(n: int, rounds: int) -> list[tuple]:
                         t0 = time.perf_counter()
                         out = pool.solve(robot, goals, task)
                         speed[p].append(n / (time.perf_counter() - t0))
-                    solved[p] = sum(r["success"] for r in out)
+                    solved[p] = sum(r.success for r in out)
             for p in pools:
                 rows.append((rid, p, speed[p], solved[p]))
     finally:

@@ -33,8 +33,8 @@ import pinocchio as pin
 from fastapi import FastAPI
 
 from app.api.responses import ORJSONResponse
-from app.api.routes.fk import FKRequest
 from app.api.schemas.common import RobotId
+from app.api.schemas.fk import FKRequest
 from app.robots.registry import Registry
 from bench._http import ensure_wrk, load, serve
 

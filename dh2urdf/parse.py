@@ -1,9 +1,10 @@
 """Validation of a DH table document (the format is in :mod:`dh2urdf.table`) into SI.
 
-:func:`parse_table` takes the document as plain Python values (from
+:func:`table_fields` takes the document as plain Python values (from
 :mod:`dh2urdf.loaders` or an HTTP body), checks every field, converts lengths and angles
-to SI (m, rad), fills the defaults and returns a :class:`~dh2urdf.table.DHTable`. The first
-offending field raises :class:`~dh2urdf.errors.DHError` with its path into the document
+to SI (m, rad), fills the defaults and returns the fields of a
+:class:`~dh2urdf.table.DHTable`. The first offending field raises
+:class:`~dh2urdf.errors.DHError` with its path into the document
 (0-based list indices, e.g. ``joints[2].lower``).
 """
 
@@ -15,16 +16,15 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from dh2urdf.errors import DHError
-from dh2urdf.loaders import HugeInt
-from dh2urdf.names import reserved_names
-from dh2urdf.table import (
+from dh2urdf.joint import (
     CONVENTIONS,
     DEFAULT_GEOMETRY_RADIUS,
     JOINT_TYPES,
     DHJoint,
-    DHTable,
     Transform,
 )
+from dh2urdf.loaders import HugeInt
+from dh2urdf.names import reserved_names
 
 #: Length units and how many of them make one metre.
 LENGTH_UNITS: dict[str, int] = {"m": 1, "cm": 100, "mm": 1000}
@@ -288,8 +288,9 @@ def _parse_joint(
     )
 
 
-def parse_table(data: Any) -> DHTable:
-    """The validated SI table of a parsed document (a mapping); :class:`DHError` otherwise."""
+def table_fields(data: Any) -> dict[str, Any]:
+    """The fields of the validated SI table of a parsed document (a mapping), the keyword
+    arguments of :class:`dh2urdf.table.DHTable`; :class:`DHError` otherwise."""
     doc = _mapping(data, "")
     _check_keys(doc, _TOP_KEYS, "")
 
@@ -362,7 +363,7 @@ def parse_table(data: Any) -> DHTable:
                 f"{joint.name!r} is reserved for a frame of the generated model",
             )
 
-    return DHTable(
+    return dict(
         name=name,
         convention=convention,
         joints=tuple(joints),

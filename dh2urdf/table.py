@@ -34,12 +34,21 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
-import numpy as np
-
+from dh2urdf.joint import (
+    CONVENTIONS,
+    DEFAULT_GEOMETRY_RADIUS,
+    JOINT_TYPES,
+    Convention,
+    DHJoint,
+    JointType,
+    Transform,
+)
 from dh2urdf.loaders import format_for_path, load_json, load_yaml
-from dh2urdf.math import xyz_rpy_to_matrix
+from dh2urdf.parse import table_fields
 
 __all__ = [
+    "Convention",
+    "JointType",
     "DHJoint",
     "DHTable",
     "Transform",
@@ -47,74 +56,6 @@ __all__ = [
     "JOINT_TYPES",
     "DEFAULT_GEOMETRY_RADIUS",
 ]
-
-Convention = Literal["standard", "modified"]
-JointType = Literal["revolute", "prismatic", "continuous"]
-
-CONVENTIONS: tuple[str, ...] = ("standard", "modified")
-JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic", "continuous")
-#: Radius (m) of the generated capsules when the table has no ``geometry`` section.
-DEFAULT_GEOMETRY_RADIUS = 0.02
-
-
-@dataclass(frozen=True, slots=True)
-class Transform:
-    """A rigid transform written as a URDF origin: translation ``xyz`` (m) then ``rpy`` (rad).
-
-    The matrix is ``T(xyz) · Rz(yaw) · Ry(pitch) · Rx(roll)`` with ``rpy = (roll, pitch, yaw)``.
-    """
-
-    xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)
-
-    @property
-    def is_identity(self) -> bool:
-        """Whether both translation and rotation are exactly zero."""
-        return all(v == 0.0 for v in self.xyz + self.rpy)
-
-    def matrix(self) -> np.ndarray:
-        """The 4×4 homogeneous transform."""
-        return xyz_rpy_to_matrix(self.xyz, self.rpy)
-
-
-@dataclass(frozen=True, slots=True)
-class DHJoint:
-    """One row of a DH table, in SI units (m, rad).
-
-    Attributes
-    ----------
-    name : str
-        Joint name (unique in the table).
-    type : {"revolute", "prismatic", "continuous"}
-        Joint kind. Revolute and continuous joints turn about their DH z axis, prismatic
-        joints slide along it.
-    a, alpha, d, theta : float
-        DH parameters (m, rad, m, rad). ``theta`` is the constant offset of a revolute joint
-        (θ = q + theta), ``d`` the constant offset of a prismatic joint (d = q + d). In the
-        modified convention ``a`` and ``alpha`` are ``a_{i-1}`` and ``α_{i-1}``.
-    lower, upper : float or None
-        Position limits of the joint variable q (rad or m); ``None`` for continuous joints.
-    velocity : float
-        Velocity limit (rad/s or m/s).
-    effort : float
-        Effort limit (N·m or N).
-    """
-
-    name: str
-    type: JointType
-    a: float
-    alpha: float
-    d: float
-    theta: float
-    lower: float | None
-    upper: float | None
-    velocity: float
-    effort: float
-
-    @property
-    def is_prismatic(self) -> bool:
-        """Whether the joint slides (its variable is a length)."""
-        return self.type == "prismatic"
 
 
 @dataclass(frozen=True, slots=True)
@@ -168,9 +109,7 @@ class DHTable:
         DHError
             With the path of the first offending field.
         """
-        from dh2urdf.parse import parse_table  # parse builds DHTable: imported here, no cycle
-
-        return parse_table(data)
+        return cls(**table_fields(data))
 
     @classmethod
     def from_yaml(cls, text: str) -> DHTable:

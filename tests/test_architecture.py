@@ -6,6 +6,9 @@
   ``Why one module:``.
 - No test module imports another test module (shared helpers live in helper modules).
 - The core's import graph has no cycle (imports that run: module- and function-level).
+- A route module (``app/api/routes/<area>.py``) holds routes only: it imports no other
+  route module (what routes share lives in plumbing modules beside them, ``app/api/*.py``)
+  and defines no pydantic model (wire models live in ``app/api/schemas/<area>.py``).
 
 Imports are read from the syntax tree, so imports inside functions and ``TYPE_CHECKING``
 blocks count too, and a name in a docstring or a comment does not.
@@ -14,9 +17,13 @@ blocks count too, and a name in a docstring or a comment does not.
 from __future__ import annotations
 
 import ast
+import importlib
+import inspect
 from pathlib import Path
+from types import ModuleType
 
 import pytest
+from pydantic import BaseModel
 
 ROOT = Path(__file__).resolve().parents[1]
 MAX_LINES = 500
@@ -198,6 +205,40 @@ def test_the_cycle_finder_sees_cycles_through_packages_and_function_imports(
     found = imported(path, package="app.kinematics", runtime=True)
     assert "app.kinematics.ik.kernel" in found and "app.storage.jobs" in found
     assert "app.robots.registry" not in found
+
+
+ROUTES = "app.api.routes"
+
+
+def _route_modules() -> list[Path]:
+    return [p for p in _modules("app/api/routes") if p.name != "__init__.py"]
+
+
+@pytest.mark.parametrize("path", _route_modules(), ids=_rel)
+def test_no_route_module_imports_another_route_module(path: Path) -> None:
+    bad = sorted(m for m in imported(path) if m == ROUTES or m.startswith(ROUTES + "."))
+    assert not bad, f"{_rel(path)} imports {bad}: share it from a module beside the routes"
+
+
+def wire_models(module: ModuleType) -> list[str]:
+    """The pydantic models ``module`` defines (not those it imports)."""
+    return sorted(
+        name
+        for name, obj in vars(module).items()
+        if inspect.isclass(obj) and issubclass(obj, BaseModel) and obj.__module__ == module.__name__
+    )
+
+
+@pytest.mark.parametrize("path", _route_modules(), ids=_rel)
+def test_no_route_module_defines_a_wire_model(path: Path) -> None:
+    found = wire_models(importlib.import_module(_package(path)))
+    assert not found, f"{_rel(path)} defines {found}: wire models go in app/api/schemas/"
+
+
+def test_the_model_reader_sees_models_defined_and_not_imported() -> None:
+    fk = importlib.import_module("app.api.schemas.fk")
+    assert {"FKRequest", "FKResponse", "FKBatchRequest"} <= set(wire_models(fk))
+    assert "ConfigurationIn" not in wire_models(fk)  # imported from schemas.common
 
 
 @pytest.mark.parametrize("path", _modules("app", "dh2urdf", "robots"), ids=_rel)

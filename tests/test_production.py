@@ -18,6 +18,7 @@ from pathlib import Path
 import httpx
 import orjson
 import pytest
+from fastapi import Request
 from fastapi.testclient import TestClient
 from starlette.middleware.base import BaseHTTPMiddleware
 
@@ -321,9 +322,9 @@ def test_logs_inside_a_request_and_in_the_pool_carry_its_id(tmp_path, capsys) ->
         return 1
 
     @app.get("/_test/log")
-    async def _log() -> dict:
+    async def _log(request: Request) -> dict:
         log.warning("on the loop")
-        return {"n": await offload(work)}
+        return {"n": await offload(request, work)}
 
     @app.get("/_test/boom")
     async def _boom() -> dict:

@@ -23,6 +23,7 @@ from pydantic import BaseModel, ValidationError
 from starlette.responses import Response
 
 from app.api.errors import NESTED_TOO_DEEPLY, MalformedBodyError, problem
+from app.api.limits import check_batch_size
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group, expand_rows, row_width
 from app.kinematics.models import RobotModel, check_joint_values
@@ -104,8 +105,7 @@ def configurations(
     joint (rad or m), every value within the joint-value bound.
     """
     n = len(rows)
-    if n > limit:
-        raise InvalidInputError(f"{n} configurations exceed the limit of {limit}", "configurations")
+    check_batch_size(n, limit, "configurations", "configurations")
     if n == 0:
         raise InvalidInputError("give at least one configuration", "configurations")
     if not isinstance(rows, np.ndarray):

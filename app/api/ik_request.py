@@ -12,9 +12,9 @@ import numpy as np
 import pinocchio as pin
 from starlette.requests import HTTPConnection
 
-from app.api.deps import scene_store
-from app.api.routes.scenes import resolve_obstacles
+from app.api.obstacles import resolve_obstacles
 from app.api.schemas.ik import IKTaskIn, Target
+from app.api.state import services
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import default_frame, group
 from app.kinematics.ik.batch import Collisions, collision_accept
@@ -28,39 +28,14 @@ def target_of(target: Target, mode: str, field: str = "target") -> pin.SE3:
     return target_placement(target.position, target.orientation, target.matrix, mode, field)
 
 
-def check_budget(request: HTTPConnection, timeout_ms: float) -> None:
-    """Refuse a per-target budget above the server's ``ik_max_timeout_ms`` (``timeout_ms``)."""
-    cap = request.app.state.settings.ik_max_timeout_ms
-    if timeout_ms > cap:
-        raise InvalidInputError(
-            f"{timeout_ms} ms exceeds the server's cap of {cap} ms", "timeout_ms"
-        )
-
-
-def check_request_budget(
-    request: HTTPConnection, count: int, noun: str, timeout_ms: float, remedy: str, field: str
-) -> None:
-    """Refuse a request whose total budget, ``count`` solves × ``timeout_ms``, exceeds the
-    server's ``ik_max_request_s`` (InvalidInputError naming ``field``; ``noun`` names what is
-    counted, ``remedy`` says how to stay within it)."""
-    total_s = count * timeout_ms * 1e-3
-    cap_s = request.app.state.settings.ik_max_request_s
-    if total_s > cap_s:
-        raise InvalidInputError(
-            f"{count} {noun} × {timeout_ms:g} ms = {total_s:g} s exceeds the server's budget "
-            f"of {cap_s:g} s per request: {remedy}",
-            field,
-        )
-
-
-def collisions_of(request: HTTPConnection, body: IKTaskIn) -> Collisions | None:
+def collisions_of(conn: HTTPConnection, body: IKTaskIn) -> Collisions | None:
     """(obstacles, margin, geometry) for collision-aware IK, or None (validated here)."""
     if not body.avoid_collisions:
         for name in ("obstacles", "scene"):
             if getattr(body, name) is not None:
                 raise InvalidInputError("only used with avoid_collisions: true", name)
         return None
-    obstacles = resolve_obstacles(scene_store(request), body.obstacles, body.scene)
+    obstacles = resolve_obstacles(services(conn).scenes, body.obstacles, body.scene)
     return obstacles, body.margin, body.collision_geometry
 
 

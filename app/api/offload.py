@@ -1,4 +1,5 @@
-"""Work off the event loop: two bounded pools, and cancelling work whose client has left.
+"""Work off the event loop: the app's two bounded pools, and cancelling work whose client has
+left. The pools are the app's (:class:`~app.api.state.Services`, made by the lifespan).
 
 The event loop serves sub-millisecond endpoints and /health; anything longer (IK with big
 budgets, batches, reachability) runs in the compute pool (:func:`offload`), and long work
@@ -13,7 +14,6 @@ from __future__ import annotations
 import asyncio
 import contextvars
 import functools
-import os
 import threading
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -21,40 +21,12 @@ from typing import Any, TypeVar
 
 from fastapi import Request
 from starlette.exceptions import HTTPException
+from starlette.requests import HTTPConnection
 
+from app.api.state import services
 from app.kinematics.errors import Cancelled
 
 T = TypeVar("T")
-
-_POOL: ThreadPoolExecutor | None = None
-
-
-def pool() -> ThreadPoolExecutor:
-    """The bounded pool for long work (IK with big budgets, batches, reachability).
-
-    One worker per core: Pinocchio work holds the GIL for short stretches only, and the
-    event loop stays free for sub-millisecond endpoints and /health.
-    """
-    global _POOL
-    if _POOL is None:
-        _POOL = ThreadPoolExecutor(max_workers=os.cpu_count() or 2, thread_name_prefix="work")
-    return _POOL
-
-
-_UPLOAD_POOLS: dict[int, ThreadPoolExecutor] = {}
-_UPLOAD_LOCK = threading.Lock()
-
-
-def upload_pool(workers: int) -> ThreadPoolExecutor:
-    """The bounded pool of robot uploads (``workers`` threads, ``DENAVIT_UPLOAD_WORKERS``);
-    never the compute pool, whose threads stay free for compute requests."""
-    with _UPLOAD_LOCK:
-        executor = _UPLOAD_POOLS.get(workers)
-        if executor is None:
-            executor = _UPLOAD_POOLS[workers] = ThreadPoolExecutor(
-                max_workers=workers, thread_name_prefix="upload"
-            )
-        return executor
 
 
 async def _run_in(executor: ThreadPoolExecutor, fn: Callable[..., T], *args: Any, **kw: Any) -> T:
@@ -63,15 +35,16 @@ async def _run_in(executor: ThreadPoolExecutor, fn: Callable[..., T], *args: Any
     return await loop.run_in_executor(executor, context.run, functools.partial(fn, *args, **kw))
 
 
-async def offload(fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
-    """Run ``fn(*args, **kwargs)`` in the bounded compute pool and await its result."""
-    return await _run_in(pool(), fn, *args, **kwargs)
+async def offload(conn: HTTPConnection, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    """Run ``fn(*args, **kwargs)`` in the app's bounded compute pool
+    (:attr:`~app.api.state.Services.compute`) and await its result."""
+    return await _run_in(services(conn).compute, fn, *args, **kwargs)
 
 
 async def offload_upload(request: Request, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
-    """Run the upload ``fn(*args, **kwargs)`` in the upload pool and await its result."""
-    workers = request.app.state.settings.upload_workers
-    return await _run_in(upload_pool(workers), fn, *args, **kwargs)
+    """Run the upload ``fn(*args, **kwargs)`` in the app's upload pool
+    (:attr:`~app.api.state.Services.uploads`) and await its result."""
+    return await _run_in(services(request).uploads, fn, *args, **kwargs)
 
 
 #: How often (s) a request whose work runs in the pool checks that its client is still there.
@@ -109,7 +82,7 @@ async def offload_cancellable(
     answer would reach no one).
     """
     cancel = threading.Event()
-    work = asyncio.ensure_future(offload(fn, *args, cancel=cancel, **kwargs))
+    work = asyncio.ensure_future(offload(request, fn, *args, cancel=cancel, **kwargs))
     watcher = asyncio.ensure_future(_watch_disconnect(request, cancel))
     try:
         return await work

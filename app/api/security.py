@@ -11,10 +11,13 @@ import hmac
 
 from fastapi import HTTPException, Request
 
+from app.api.deps import SettingsDep
 
-def require_token(request: Request) -> None:
-    """FastAPI dependency for write routes: ``dependencies=[Depends(require_token)]``."""
-    expected = request.app.state.settings.api_token
+
+async def require_token(request: Request, settings: SettingsDep) -> None:
+    """FastAPI dependency for write routes: ``dependencies=[Depends(require_token)]``
+    (``async``: no thread hop)."""
+    expected = settings.api_token
     if not expected:
         return
     header = request.headers.get("authorization", "")

@@ -340,6 +340,14 @@ class BuildJobs:
                 self._cancel(job)
         return job
 
+    def close(self) -> None:
+        """Cancel this instance's queued and running builds (at application shutdown): a
+        queued one ends ``cancelled`` at once, a running one's build processes stop within
+        a moment and it ends ``cancelled``; other processes' jobs are left alone."""
+        with self._lock:
+            for job in [j for j in self.jobs.values() if j.status in ACTIVE]:
+                self._cancel(job)
+
     def _cancel(self, job: BuildJob, conn: sqlite3.Connection | None = None) -> None:
         """Cancel an own job (lock held): a queued one at once (in transaction ``conn``, else
         its own), a running one when :func:`build_map` next looks at ``progress.cancel``."""

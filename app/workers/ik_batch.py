@@ -2,8 +2,9 @@
 
 A batch whose targets all start from the same seed (``chain_seeds: false``) is a set of
 independent solves, so it can be spread over worker processes (the solve is mostly Python:
-threads would share one core). :class:`BatchPool` keeps a warm
-:class:`~concurrent.futures.ProcessPoolExecutor` (forkserver; made on first use) whose
+threads would share one core). :class:`BatchPool` (one per app, made by its lifespan,
+:mod:`app.api.state`) keeps a warm :class:`~concurrent.futures.ProcessPoolExecutor`
+(forkserver; made on first use) whose
 workers rebuild each robot from what its :class:`~app.kinematics.models.RobotModel` was built
 from (URDF text, package directories, SRDF, end effector; cached per robot id and a digest
 of those, so a replaced robot is rebuilt) and solve chunks of consecutive targets; the
@@ -35,17 +36,19 @@ from __future__ import annotations
 import hashlib
 import math
 import multiprocessing
+import multiprocessing.forkserver
+import queue
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, CancelledError, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, UnavailableError
+from app.kinematics.ik import IKResult
 from app.kinematics.ik.batch import BatchTask, solve_targets
 from app.kinematics.ik.warmup import warm_up
 from app.kinematics.lazy import LazyKey
@@ -141,7 +144,7 @@ def _worker_robot(recipe: RobotRecipe) -> RobotModel:
 
 def _worker_chunk(
     recipe: RobotRecipe, matrices: np.ndarray, start: int, task: BatchTask
-) -> list[dict[str, Any]]:
+) -> list[IKResult]:
     """Targets ``start`` … of a batch (homogeneous matrices, root frame) in a worker."""
     robot = _worker_robot(recipe)
     targets = [pin.SE3(np.ascontiguousarray(T)) for T in matrices]
@@ -153,6 +156,44 @@ def chunk_size(n: int, processes: int, timeout_ms: float) -> int:
     :data:`CHUNK_MAX`, and a chunk's budget within :data:`CHUNK_BUDGET_MS` where possible."""
     size = min(CHUNK_MAX, math.ceil(n / (4 * processes)))
     return max(1, min(size, math.floor(CHUNK_BUDGET_MS / timeout_ms)))
+
+
+_STARTER: queue.SimpleQueue[Future[None]] | None = None
+_STARTER_LOCK = threading.Lock()
+
+
+def _starter(requests: queue.SimpleQueue[Future[None]]) -> None:
+    while True:
+        done = requests.get()
+        try:
+            multiprocessing.forkserver.ensure_running()
+        except BaseException as exc:  # noqa: BLE001 - handed to the caller
+            done.set_exception(exc)
+        else:
+            done.set_result(None)
+
+
+def ensure_forkserver() -> None:
+    """Start this process's forkserver, if it is not running, from a thread that lives as
+    long as the process.
+
+    The forkserver dies with the *thread* that started it: :mod:`app.workers.forkserver_init`
+    sets ``PR_SET_PDEATHSIG``, whose "parent" is the starting thread. Started by a thread of
+    an app's compute pool (the thread that submits a batch), it would die when that app's
+    lifespan stops its pool, and a later pool of the process (another app, a restarted
+    lifespan) would find it gone.
+    """
+    global _STARTER
+    with _STARTER_LOCK:
+        if _STARTER is None:
+            _STARTER = queue.SimpleQueue()
+            threading.Thread(
+                target=_starter, args=(_STARTER,), name="forkserver-starter", daemon=True
+            ).start()
+        requests = _STARTER
+    done: Future[None] = Future()
+    requests.put(done)
+    done.result()
 
 
 class BatchPool:
@@ -167,9 +208,10 @@ class BatchPool:
 
     def _pool(self) -> ProcessPoolExecutor:
         with self._lock:
+            ctx = multiprocessing.get_context("forkserver")
+            ctx.set_forkserver_preload(["app.workers.forkserver_init", "app.workers.ik_batch"])
+            ensure_forkserver()  # the workers fork from it as they start, on submit
             if self._executor is None:
-                ctx = multiprocessing.get_context("forkserver")
-                ctx.set_forkserver_preload(["app.workers.forkserver_init", "app.workers.ik_batch"])
                 self._executor = ProcessPoolExecutor(
                     self.processes, mp_context=ctx, initializer=_worker_init
                 )
@@ -198,7 +240,7 @@ class BatchPool:
         *,
         cancel: threading.Event | None = None,
         record: Callable[[bool], None] | None = None,
-    ) -> list[dict[str, Any]]:
+    ) -> list[IKResult]:
         """Every target solved from ``task.seed``, in order (as :func:`solve_targets`): in the
         workers when there are several and at least :data:`MIN_PARALLEL` targets, else here.
 
@@ -222,7 +264,7 @@ class BatchPool:
                 futures.append(
                     executor.submit(_worker_chunk, recipe, matrices[a : a + size], a, task)
                 )
-            out: list[dict[str, Any]] = []
+            out: list[IKResult] = []
             for fut in futures:
                 while True:
                     if cancel is not None and cancel.is_set():
@@ -232,8 +274,8 @@ class BatchPool:
                     wait([fut], timeout=POLL_S, return_when=FIRST_COMPLETED)
                 part = fut.result()
                 if record is not None:
-                    for entry in part:
-                        record(entry["success"])
+                    for res in part:
+                        record(res.success)
                 out.extend(part)
             return out
         except BrokenProcessPool:
@@ -249,28 +291,3 @@ class BatchPool:
         finally:
             for fut in futures:
                 fut.cancel()
-
-
-_POOL: BatchPool | None = None
-_POOL_LOCK = threading.Lock()
-
-
-def batch_pool(processes: int) -> BatchPool:
-    """This process's pool of ``processes`` workers (one at a time: a different size
-    replaces it)."""
-    global _POOL
-    with _POOL_LOCK:
-        if _POOL is None or _POOL.processes != processes:
-            if _POOL is not None:
-                _POOL.shutdown()
-            _POOL = BatchPool(processes)
-        return _POOL
-
-
-def shutdown_pool() -> None:
-    """Stop this process's batch workers, if any (at application shutdown)."""
-    global _POOL
-    with _POOL_LOCK:
-        pool, _POOL = _POOL, None
-    if pool is not None:
-        pool.shutdown()

@@ -99,16 +99,16 @@ def _same(results: list[dict], reference: list[dict]) -> None:
 
 @pytest.fixture
 def pooled(tmp_path: Path):
-    """A client whose server solves batches in 2 worker processes; the pool stopped after."""
+    """A client whose server solves batches in 2 worker processes (the app's pool, stopped
+    by its lifespan)."""
     app = create_app(Settings(data_dir=tmp_path / "data", ik_batch_processes=2))
     with TestClient(app, raise_server_exceptions=False) as c:
         yield c
-    ik_batch.shutdown_pool()
 
 
-def _pool_pids() -> list[int]:
-    pool = ik_batch._POOL
-    executor = None if pool is None else pool._executor
+def _pool_pids(client: TestClient) -> list[int]:
+    pool = client.app.state.services.ik_batch
+    executor = pool._executor
     return [] if executor is None else list(executor._processes)
 
 
@@ -118,7 +118,7 @@ def test_two_processes_answer_as_each_target_alone(pooled, registry, robot_id, f
     targets = _targets(robot, frame, 40, seed=3)
     r = pooled.post(f"/robots/{robot_id}/ik/batch", json=_body(robot, frame, targets))
     assert r.status_code == 200, r.text
-    assert len(_pool_pids()) == 2  # the batch went through the worker processes
+    assert len(_pool_pids(pooled)) == 2  # the batch went through the worker processes
     out = r.json()
     _same(out["results"], _reference(robot, frame, targets))
     assert out["solved"] == sum(x["success"] for x in out["results"]) >= 38
@@ -132,7 +132,7 @@ def test_chunk_boundaries_do_not_change_answers(pooled, registry, monkeypatch) -
     targets = _targets(robot, "panda_link8", 11, seed=5)
     r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", targets))
     assert r.status_code == 200, r.text
-    assert len(_pool_pids()) == 2
+    assert len(_pool_pids(pooled)) == 2
     _same(r.json()["results"], _reference(robot, "panda_link8", targets))
 
 
@@ -142,7 +142,7 @@ def test_collision_aware_batch_in_the_pool(pooled, registry) -> None:
     body = _body(robot, "panda_link8", targets, avoid_collisions=True, obstacles=[BOX])
     r = pooled.post("/robots/panda/ik/batch", json=body)
     assert r.status_code == 200, r.text
-    assert len(_pool_pids()) == 2
+    assert len(_pool_pids(pooled)) == 2
     accept = collision_filter(robot, parse_obstacles([BOX]), margin=0.0, mode="mesh")
     _same(r.json()["results"], _reference(robot, "panda_link8", targets, accept))
 
@@ -183,9 +183,9 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
     )
     thread.start()
     event = threading.Event()
-    while not _pool_pids() and thread.is_alive():
+    while not _pool_pids(pooled) and thread.is_alive():
         event.wait(0.01)
-    pids = _pool_pids()
+    pids = _pool_pids(pooled)
     assert pids, answer
     os.kill(pids[0], signal.SIGKILL)
     thread.join(timeout=120)
@@ -194,7 +194,7 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
     good = _targets(robot, "panda_link8", 34, seed=4)
     r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", good))
     assert r.status_code == 200, r.text
-    assert pids[0] not in _pool_pids() and len(_pool_pids()) == 2
+    assert pids[0] not in _pool_pids(pooled) and len(_pool_pids(pooled)) == 2
 
 
 def _ik_failures(client: httpx.Client) -> float:
@@ -235,3 +235,51 @@ def test_a_replaced_robot_is_rebuilt_in_the_workers(registry) -> None:
     assert ik_batch.RobotRecipe.of(RobotModel("arm", panda.urdf_text)).key != a.key  # dirs
     rebuilt = b.build()
     assert rebuilt.joint_names == ur5.joint_names and rebuilt.urdf_text == ur5.urdf_text
+
+
+#: Run in a fresh interpreter (no forkserver yet): a pool used from a short-lived thread (as
+#: an app's compute pool thread, stopped with its app) until a worker has forked (so the
+#: forkserver has set its death signal), then the forkserver's state once that thread has
+#: left the kernel's task list.
+_FORKSERVER_PROBE = """
+import json, multiprocessing.forkserver, os, threading, time
+from app.workers.ik_batch import BatchPool
+
+pool = BatchPool(2)
+t = threading.Thread(target=lambda: pool._pool().submit(int).result())  # a worker forked
+t.start()
+t.join()
+end = time.monotonic() + 60
+while os.path.exists(f"/proc/self/task/{t.native_id}") and time.monotonic() < end:
+    time.sleep(0.01)
+pid = multiprocessing.forkserver._forkserver._forkserver_pid
+with open(f"/proc/{pid}/stat") as f:
+    state = f.read().rpartition(")")[2].split()[0]
+with open(f"/proc/{pid}/status") as f:
+    pending = {k: int(v, 16) for k, _, v in (line.partition(":") for line in f)
+               if k in ("SigPnd", "ShdPnd")}
+print(json.dumps({"state": state, "kill_pending": any(v >> 8 & 1 for v in pending.values())}))
+pool.shutdown()
+"""
+
+
+def test_the_forkserver_outlives_the_thread_that_started_the_pool() -> None:
+    """The forkserver dies with the thread that started it (``PR_SET_PDEATHSIG``): a pool
+    first used from a thread that ends (an app's compute pool, stopped by its lifespan)
+    must not take it down, else the next pool of the process finds it gone. Checked
+    without timing: once the thread has left the kernel's task list, its death signal
+    has been sent, so the forkserver is either still clean or already doomed."""
+    import json
+    import subprocess
+    import sys
+
+    out = subprocess.run(
+        [sys.executable, "-c", _FORKSERVER_PROBE],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+        cwd=Path(__file__).resolve().parents[2],
+    )
+    seen = json.loads(out.stdout.strip().splitlines()[-1])
+    assert seen["state"] in ("R", "S", "D") and not seen["kill_pending"], seen  # alive, clean

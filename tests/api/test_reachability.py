@@ -411,8 +411,7 @@ def test_registry_planar2_annulus(client):
 
 
 def test_too_many_active_builds(pc, app):
-    pc.get(f"{BASE}/jobs")  # creates the build queue
-    app.state.reachability[1].max_active = 1
+    app.state.services.jobs.max_active = 1
     first = pc.post(BASE, json=dict(PLANAR_BUILD, samples=200_000_000)).json()["job_id"]
     r = pc.post(BASE, json=PLANAR_BUILD)
     assert r.status_code == 409 and r.json()["field"] == "robot_id"

@@ -441,7 +441,9 @@ def _fuzz_client(factory: pytest.TempPathFactory) -> tuple[TestClient, Path]:
     if "client" not in _FUZZ:
         data = factory.mktemp("fuzz")
         app = create_app(Settings(data_dir=data))
-        _FUZZ["client"] = (TestClient(app, raise_server_exceptions=False), data)
+        client = TestClient(app, raise_server_exceptions=False)
+        client.__enter__()  # the lifespan runs (its stores and pools) until the process ends
+        _FUZZ["client"] = (client, data)
     return _FUZZ["client"]
 
 

@@ -5,184 +5,40 @@
 - POST /robots/{robot_id}/statics
 
 Definitions (task rows, supporting joints, rank tolerance, ellipsoids, statics sign) are
-those of :mod:`app.kinematics.analysis`.
+those of :mod:`app.kinematics.analysis`; wire models: :mod:`app.api.schemas.analysis`.
 """
 
 from __future__ import annotations
 
-from typing import Annotated
-
 import numpy as np
 from fastapi import APIRouter, Request
-from pydantic import BaseModel, Field
 
 from app.api.body import body_schema, decode_body, group_configurations
-from app.api.deps import RegistryDep, load_robot
+from app.api.deps import RobotDep, SettingsDep
 from app.api.errors import ERROR_RESPONSES
 from app.api.offload import offload
 from app.api.responses import ORJSONResponse
-from app.api.routes.jacobian import REFERENCE_DOC
-from app.api.schemas.common import ConfigurationIn, Finite, JointValue, RobotId, Schema, group_field
-from app.kinematics.analysis import (
-    DEFAULT_RELATIVE_TOLERANCE,
-    Part,
-    manipulability_batch,
-    torques_from_wrench,
-    wrench_from_torques,
+from app.api.schemas.analysis import (
+    ManipulabilityBatchRequest,
+    ManipulabilityBatchResponse,
+    ManipulabilityRequest,
+    ManipulabilityResponse,
+    StaticsRequest,
+    StaticsResponse,
 )
 from app.kinematics.analysis import (
     compute_manipulability as manipulability_core,
 )
+from app.kinematics.analysis import (
+    manipulability_batch,
+    torques_from_wrench,
+    wrench_from_torques,
+)
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group, default_frame, group
-from app.kinematics.jacobian import Reference
 from app.kinematics.models import RobotModel
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["analysis"])
-
-PART_DOC = (
-    "Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) | rotation "
-    "(wx wy wz). Give either part or rows."
-)
-ROWS_DOC = (
-    'Explicit task rows by name (vx, vy, vz, wx, wy, wz) or index 0–5, e.g. ["vx", "vy"] '
-    "for a planar arm in the x-y plane. Give either part or rows."
-)
-TOL_DOC = "Relative rank tolerance: σ_i counts toward the rank when σ_i > relative_tolerance·σ_max."
-Row = Annotated[str | int, Field(description="Row name (vx … wz) or index 0–5.")]
-#: A force, moment or joint torque: finite and at most 10¹² in magnitude (N, N·m).
-Load = Annotated[Finite, Field(ge=-1e12, le=1e12)]
-
-
-class TaskOptions(Schema):
-    """Which frame, which Jacobian rows, which reference, which rank tolerance."""
-
-    frame: str | None = Field(
-        None, description="Frame; default the end effector (with `group`: the group's tip)."
-    )
-    part: Part | None = Field(None, description=PART_DOC)
-    rows: list[Row] | None = Field(None, description=ROWS_DOC, max_length=6)
-    reference: Reference = Field("world", description=REFERENCE_DOC)
-    relative_tolerance: Finite = Field(
-        DEFAULT_RELATIVE_TOLERANCE, ge=0.0, lt=1.0, description=TOL_DOC
-    )
-
-
-class ManipulabilityRequest(ConfigurationIn, TaskOptions):
-    """A configuration and the task to analyse."""
-
-
-class Ellipsoid(BaseModel):
-    """An ellipsoid in task space (the task's rows as coordinates)."""
-
-    axes: list[list[float]] = Field(description="m unit axes (left singular vectors u_i).")
-    half_lengths: list[float | None] = Field(
-        description="Half-length along each axis; null = infinite (lost direction)."
-    )
-
-
-class ManipulabilityResponse(BaseModel):
-    """Manipulability measures of the task Jacobian J_t = J[rows][:, joints]."""
-
-    robot_id: str
-    frame: str
-    reference: str
-    q: list[float]
-    rows: list[str] = Field(description="The task's Jacobian rows, in order.")
-    joints: list[str] = Field(
-        description="The task Jacobian's columns: the joints that move the frame."
-    )
-    yoshikawa: float = Field(description="∏σ_i (= √det(J_t J_tᵀ) when rows ≤ joints).")
-    singular_values: list[float] = Field(description="σ_1 ≥ … ≥ σ_p, p = min(rows, joints).")
-    min_singular_value: float
-    inverse_condition: float = Field(description="σ_min / σ_max (0 for a zero Jacobian).")
-    condition_number: float | None = Field(description="σ_max / σ_min; null when singular.")
-    det_jjt: float = Field(description="det(J_t J_tᵀ); exactly 0 when rows > joints.")
-    rank: int
-    tolerance: float = Field(description="Absolute threshold used for the rank: σ_i > this.")
-    relative_tolerance: float
-    singular: bool = Field(description="rank < min(rows, joints).")
-    velocity_ellipsoid: Ellipsoid = Field(description="Axes u_i, half-lengths σ_i.")
-    force_ellipsoid: Ellipsoid = Field(description="Axes u_i, half-lengths 1/σ_i.")
-    lost_directions: list[list[float]] = Field(
-        description="Orthonormal basis of the left null space: task directions the frame "
-        "cannot move in (coordinates over `rows`)."
-    )
-    dependent_joints: list[str] = Field(
-        description="Joints whose columns take part in a linear dependency (null-space support)."
-    )
-    joint_null_space: list[list[float]] = Field(
-        description="Orthonormal basis of the null space: joint velocities (over `joints`) "
-        "that do not move the task."
-    )
-
-
-class ManipulabilityBatchRequest(TaskOptions):
-    """Many configurations, one task."""
-
-    configurations: list[list[JointValue]] = Field(
-        description="N configurations, each one value per joint in joint order (rad, m); "
-        "with `group`, rows of the group's joints only are accepted too (others neutral)."
-    )
-    group: str | None = group_field()
-
-
-class ManipulabilityBatchResponse(BaseModel):
-    """Compact arrays: entry i belongs to configuration i."""
-
-    robot_id: str
-    frame: str
-    reference: str
-    rows: list[str]
-    joints: list[str]
-    yoshikawa: list[float]
-    min_singular_value: list[float]
-    max_singular_value: list[float]
-    inverse_condition: list[float]
-    condition_number: list[float | None] = Field(description="null where singular.")
-    det_jjt: list[float]
-    rank: list[int]
-    singular: list[bool]
-
-
-class StaticsRequest(ConfigurationIn):
-    """Exactly one of wrench (→ torques) or torques (→ wrench); with `group`, the torques are
-    those of the group's joints (in the group's order)."""
-
-    frame: str | None = Field(
-        None, description="Frame; default the end effector (with `group`: the group's tip)."
-    )
-    reference: Reference = Field(
-        "world",
-        description="Axes of the wrench (as for the Jacobian). world: force and moment about "
-        "the frame origin, world axes | local: frame axes | world_spatial: moment about the "
-        "world origin.",
-    )
-    wrench: Annotated[list[Load], Field(min_length=6, max_length=6)] | None = Field(
-        None,
-        description="[fx, fy, fz, mx, my, mz] (N, N·m): the wrench the frame exerts on its "
-        "environment.",
-    )
-    torques: list[Load] | None = Field(
-        None, description="Joint torques/forces in joint order (N·m, N).", max_length=1024
-    )
-
-
-class StaticsResponse(BaseModel):
-    """τ = Jᵀ·F, forward or least-squares inverse."""
-
-    robot_id: str
-    frame: str
-    reference: str
-    q: list[float]
-    wrench: list[float] = Field(description="[fx, fy, fz, mx, my, mz] (N, N·m).")
-    torques: list[float] = Field(description="Jᵀ·F in joint order (N·m, N).")
-    joint_names: list[str]
-    residual: list[float] = Field(
-        description="Given torques − Jᵀ·F (zeros when the wrench was given)."
-    )
-    residual_norm: float
-    rank: int = Field(description="Rank of the 6×n Jacobian (σ_i > 1e-10·σ_max).")
 
 
 def _manip_json(robot_id: str, frame: str, reference: str, q: np.ndarray, res) -> dict:
@@ -197,11 +53,8 @@ def _manip_json(robot_id: str, frame: str, reference: str, q: np.ndarray, res) -
     response_model=ManipulabilityResponse,
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
-async def compute_manipulability(
-    robot_id: RobotId, body: ManipulabilityRequest, reg: RegistryDep
-) -> ORJSONResponse:
+async def compute_manipulability(robot: RobotDep, body: ManipulabilityRequest) -> ORJSONResponse:
     """Manipulability, singularity and ellipsoids of a frame at one configuration."""
-    robot = await load_robot(reg, robot_id)
     grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     res = manipulability_core(
@@ -235,15 +88,14 @@ def _batch_body(
     openapi_extra=body_schema(ManipulabilityBatchRequest),
 )
 async def compute_manipulability_batch(
-    robot_id: RobotId, request: Request, reg: RegistryDep
+    robot: RobotDep, request: Request, settings: SettingsDep
 ) -> ORJSONResponse:
     """Scalar manipulability measures for many configurations (computed off the event loop)."""
-    robot = await load_robot(reg, robot_id)
     raw = await request.body()
-    limit = request.app.state.settings.max_batch
-    body, grp, qs = await offload(_batch_body, raw, robot, limit)
+    body, grp, qs = await offload(request, _batch_body, raw, robot, settings.max_batch)
     frame = default_frame(robot, grp, body.frame)
     out = await offload(
+        request,
         manipulability_batch,
         robot,
         qs,
@@ -265,13 +117,10 @@ async def compute_manipulability_batch(
     response_model=StaticsResponse,
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
-async def compute_statics(
-    robot_id: RobotId, body: StaticsRequest, reg: RegistryDep
-) -> ORJSONResponse:
+async def compute_statics(robot: RobotDep, body: StaticsRequest) -> ORJSONResponse:
     """Joint torques τ = Jᵀ·F from a wrench at a frame, or the least-squares wrench from τ."""
     if (body.wrench is None) == (body.torques is None):
         raise InvalidInputError("give exactly one of wrench or torques", "wrench")
-    robot = await load_robot(reg, robot_id)
     grp, q = body.group_config(robot)
     frame = default_frame(robot, grp, body.frame)
     joints = None if grp is None else grp.indices

@@ -2,149 +2,40 @@
 GET /robots/{robot_id}/collision_pairs.
 
 The rules (which pairs are checked, mesh vs convex-hull geometry, margins, signed
-distances) are those of :mod:`app.kinematics.collision`; see docs/collisions.md.
+distances) are those of :mod:`app.kinematics.collision`; see docs/collisions.md. Wire
+models: :mod:`app.api.schemas.collisions`.
 """
 
 from __future__ import annotations
 
 import threading
-from typing import Annotated, Literal
 
 import numpy as np
 from fastapi import APIRouter, Request
-from pydantic import BaseModel, Field, Strict
 
 from app.api.body import group_configurations
-from app.api.deps import RegistryDep, SceneStoreDep, load_robot
+from app.api.deps import RobotDep, SceneStoreDep, SettingsDep
 from app.api.errors import ERROR_RESPONSES
+from app.api.obstacles import resolve_obstacles
 from app.api.offload import offload, offload_cancellable
 from app.api.responses import ORJSONResponse
-from app.api.routes.scenes import ObstacleIn, resolve_obstacles
-from app.api.schemas.common import (
-    ConfigurationIn,
-    JointValue,
-    RobotId,
-    Schema,
-    Vec3Out,
-    group_field,
+from app.api.schemas.collisions import (
+    CollisionBatchRequest,
+    CollisionBatchResponse,
+    CollisionPairsResponse,
+    CollisionRequest,
+    CollisionResponse,
 )
 from app.kinematics.collision import collision_model, collision_model_built, report_json
 from app.kinematics.collision_pairs import collision_link_pairs, collision_links
 from app.kinematics.groups import group
 from app.kinematics.models import RobotModel
-from app.kinematics.obstacles import MAX_OBSTACLES, Obstacle
+from app.kinematics.obstacles import Obstacle
 
 router = APIRouter(prefix="/robots/{robot_id}", tags=["collisions"])
 
 #: Obstacle counts above this are checked in the work pool rather than on the event loop.
 INLINE_OBSTACLES = 8
-GeometryMode = Literal["mesh", "convex"]
-Margin = Annotated[float, Strict(), Field(ge=0.0, le=10.0, allow_inf_nan=False)]
-Flag = Annotated[bool, Strict()]
-
-
-class CollisionOptions(Schema):
-    """What to check against and how."""
-
-    obstacles: list[ObstacleIn] | None = Field(
-        None, max_length=MAX_OBSTACLES, description="Obstacles in the robot's root frame."
-    )
-    scene: str | None = Field(
-        None, max_length=64, description="Name of a stored scene (instead of obstacles)."
-    )
-    margin: Margin = Field(
-        0.0, description="Safety margin (m): pairs closer than this count as in collision."
-    )
-    distances: Flag = Field(
-        False,
-        description="Compute every checked pair's distance and witness points "
-        "(slower, especially with meshes).",
-    )
-    geometry: GeometryMode = Field(
-        "mesh",
-        description="mesh: the URDF collision meshes (exact); convex: their convex hulls "
-        "(faster, conservative, signed distances).",
-    )
-
-
-class CollisionRequest(ConfigurationIn, CollisionOptions):
-    """A configuration to check."""
-
-
-class PairOut(BaseModel):
-    """A checked pair: two links (self) or a link and an obstacle (environment)."""
-
-    a: str = Field(description="Link name.")
-    b: str = Field(description="Link name (self) or obstacle name (environment).")
-    kind: Literal["self", "environment"]
-    in_collision: bool = Field(description="Closer than the margin.")
-    distance: float | None = Field(
-        description="Distance (m); negative = penetration depth where coal computes it "
-        "(convex hulls, primitives); 0 for penetrating meshes."
-    )
-    point_a: Vec3Out | None = Field(
-        None, description="Witness point on a, root frame (m); with distances."
-    )
-    point_b: Vec3Out | None = Field(
-        None, description="Witness point on b, root frame (m); with distances."
-    )
-
-
-class CollisionResponse(BaseModel):
-    """The verdict for one configuration."""
-
-    robot_id: str
-    q: list[float] = Field(description="The configuration checked, in joint order.")
-    geometry: str
-    margin: float
-    in_collision: bool = Field(description="Any pair closer than the margin.")
-    self_collision: bool = Field(description="Two links of the robot collide.")
-    environment_collision: bool = Field(description="A link collides with an obstacle.")
-    min_distance: float | None = Field(
-        description="Smallest distance (m) over the checked pairs with distances; otherwise "
-        "over the pairs in collision (null when none)."
-    )
-    pairs: list[PairOut] = Field(
-        description="Pairs in collision, or every checked pair with distances; closest first."
-    )
-    checked_pairs: int = Field(description="Number of link/link and link/obstacle pairs checked.")
-
-
-class CollisionBatchRequest(CollisionOptions):
-    """Many configurations (e.g. the waypoints of a trajectory)."""
-
-    configurations: list[list[JointValue]] = Field(
-        description="N configurations, each one value per joint in joint order (rad, m); "
-        "with `group`, rows of the group's joints only are accepted too (others neutral)."
-    )
-    group: str | None = group_field()
-
-
-class CollisionBatchResponse(BaseModel):
-    """Compact per-configuration answers: entry i for configuration i."""
-
-    robot_id: str
-    geometry: str
-    margin: float
-    count: int
-    num_in_collision: int
-    first_collision: int | None = Field(description="Index of the first colliding configuration.")
-    in_collision: list[bool]
-    self_collision: list[bool]
-    environment_collision: list[bool]
-    pairs: list[list[list[str]]] = Field(description="Per configuration: colliding [a, b] pairs.")
-    min_distance: list[float] | None = Field(
-        None, description="Per configuration: smallest distance (m); only with distances."
-    )
-
-
-class CollisionPairsResponse(BaseModel):
-    """Which self-collision pairs are checked."""
-
-    robot_id: str
-    links: list[str] = Field(description="Links with collision geometry.")
-    pairs: list[list[str]] = Field(description="Checked link pairs [a, b].")
-    srdf: bool = Field(description="Whether an SRDF disabled pairs.")
 
 
 def _check(robot: RobotModel, q: np.ndarray, obstacles: tuple[Obstacle, ...], body) -> dict:
@@ -167,10 +58,7 @@ def _check(robot: RobotModel, q: np.ndarray, obstacles: tuple[Obstacle, ...], bo
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def check_collisions(
-    robot_id: RobotId,
-    body: CollisionRequest,
-    reg: RegistryDep,
-    store: SceneStoreDep,
+    robot: RobotDep, body: CollisionRequest, store: SceneStoreDep, request: Request
 ) -> ORJSONResponse:
     """Self-collision and collision with obstacles at one configuration.
 
@@ -178,7 +66,6 @@ async def check_collisions(
     world are not checked against obstacles; adjacent links and SRDF-disabled pairs are
     never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
     """
-    robot = await load_robot(reg, robot_id)
     _, q = body.group_config(robot)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     built = collision_model_built(robot, body.geometry)
@@ -188,7 +75,7 @@ async def check_collisions(
         or (body.distances and body.geometry == "mesh")
     )
     if heavy:
-        return ORJSONResponse(await offload(_check, robot, q, obstacles, body))
+        return ORJSONResponse(await offload(request, _check, robot, q, obstacles, body))
     return ORJSONResponse(_check(robot, q, obstacles, body))
 
 
@@ -229,17 +116,15 @@ def _check_batch(
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def check_collisions_batch(
-    robot_id: RobotId,
+    robot: RobotDep,
     body: CollisionBatchRequest,
-    reg: RegistryDep,
     store: SceneStoreDep,
     request: Request,
+    settings: SettingsDep,
 ) -> ORJSONResponse:
     """Check many configurations (e.g. a trajectory's waypoints) in the work pool."""
-    robot = await load_robot(reg, robot_id)
     grp = group(robot, body.group)
-    limit = request.app.state.settings.max_batch
-    qs = group_configurations(robot, grp, body.configurations, limit)
+    qs = group_configurations(robot, grp, body.configurations, settings.max_batch)
     obstacles = resolve_obstacles(store, body.obstacles, body.scene)
     out = await offload_cancellable(request, _check_batch, robot, qs, obstacles, body)
     return ORJSONResponse(out)
@@ -251,10 +136,9 @@ async def check_collisions_batch(
     response_model=CollisionPairsResponse,
     responses={404: ERROR_RESPONSES[404]},
 )
-def get_collision_pairs(robot_id: RobotId, reg: RegistryDep) -> ORJSONResponse:
+def get_collision_pairs(robot: RobotDep) -> ORJSONResponse:
     """The self-collision link pairs checked (after removing same-body, adjacent and
     SRDF-disabled pairs); computed from the URDF without loading meshes."""
-    robot = reg.get(robot_id)
     pairs = collision_link_pairs(robot)
     links = sorted(collision_links(robot), key=robot.frame_id)
     return ORJSONResponse(

@@ -14,30 +14,18 @@ import os
 import tempfile
 from pathlib import Path
 
-from fastapi import APIRouter, Request
-from pydantic import BaseModel, Field
+from fastapi import APIRouter
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
+from app.api.deps import RegistryDep, SettingsDep
 from app.api.errors import Problem, problem
 from app.api.responses import ORJSONResponse
+from app.api.schemas.health import Health, Ready
 from app.robots.registry import Registry
 from app.storage.store import TMP_PREFIX
 
 router = APIRouter(tags=["service"])
-
-
-class Health(BaseModel):
-    """Liveness answer."""
-
-    status: str = Field(description='Always "ok".')
-
-
-class Ready(BaseModel):
-    """Readiness answer: every check passed."""
-
-    status: str = Field(description='"ready".')
-    checks: dict[str, str] = Field(description='Check name → "ok" (data_dir, catalog).')
 
 
 @router.get("/health", operation_id="get_health", response_model=Health)
@@ -58,10 +46,8 @@ async def get_health() -> ORJSONResponse:
         }
     },
 )
-async def get_ready(request: Request) -> Response:
+async def get_ready(settings: SettingsDep, registry: RegistryDep) -> Response:
     """Whether the service can serve: data directory writable, catalog available."""
-    settings = request.app.state.settings
-    registry: Registry = request.app.state.registry
     checks = await run_in_threadpool(readiness_checks, Path(settings.data_dir), registry)
     failed = {name: why for name, why in checks.items() if why != "ok"}
     if failed:

@@ -12,22 +12,22 @@ from typing import Any
 
 import orjson
 from fastapi import APIRouter, Depends, Request
-from pydantic import Field
 from starlette.datastructures import UploadFile
 from starlette.responses import Response
 
 from app.api.body import body_schema, read_capped, validate_body
-from app.api.deps import RegistryDep
+from app.api.deps import RegistryDep, SettingsDep
 from app.api.errors import ERROR_RESPONSES, problem
 from app.api.offload import offload_upload
-from app.api.routes.robots import _WRITE_ERRORS, RobotDetail, _created, robot_detail
-from app.api.schemas.common import RobotId, Schema, Text
+from app.api.robot_answers import WRITE_ERRORS, created, robot_detail
+from app.api.schemas.common import RobotId
+from app.api.schemas.packages import PackageForm, PackageUpload
+from app.api.schemas.robots import RobotDetail
 from app.api.security import require_token
 from app.api.untrusted import OPENAPI_HEADERS, UntrustedFileResponse
 from app.kinematics.errors import InvalidInputError
 from app.robots.documents.xacro import check_xacro_args
 from app.robots.registry import Registry
-from app.storage.store import ID_PATTERN
 
 router = APIRouter(prefix="/robots", tags=["robots"])
 
@@ -58,58 +58,6 @@ _TEXT_FIELDS = (
 )
 
 
-class PackageUpload(Schema):
-    """A robot as a description package: an archive with its description and meshes.
-
-    Sent as ``multipart/form-data``; every field but ``archive`` is a text part.
-    """
-
-    name: Text = Field(
-        max_length=256,
-        json_schema_extra={"pattern": ID_PATTERN.pattern},
-        description="Robot id: 1-64 of a-z, 0-9, '_' and '-' (used in /robots/{robot_id}).",
-    )
-    archive: bytes = Field(
-        json_schema_extra={"format": "binary"},
-        description="The package: a zip or tar.gz archive (size and entry limits: "
-        "DENAVIT_MAX_PACKAGE_BYTES, _FILES, _UNPACKED_BYTES).",
-    )
-    description: Text = Field(
-        max_length=1024,
-        description="Path inside the archive of the robot description: .urdf, .xacro or "
-        "MJCF .xml (e.g. panda_description/urdf/panda.urdf).",
-    )
-    srdf: Text | None = Field(
-        None,
-        max_length=1024,
-        description="Path of an SRDF file; one ending .xacro (e.g. ur_moveit_config/srdf/"
-        "ur.srdf.xacro) is expanded like a .xacro description, with the same packages.",
-    )
-    xacro_args: Text | None = Field(
-        None,
-        max_length=65536,
-        description="JSON object of xacro arguments: names to strings, numbers or booleans "
-        '({"arm_id": "panda"}); also those of a .xacro SRDF unless srdf_xacro_args is given.',
-    )
-    srdf_xacro_args: Text | None = Field(
-        None,
-        max_length=65536,
-        description="JSON object of the arguments of a .xacro SRDF, when they differ from "
-        'xacro_args ({"name": "ur5e", "prefix": ""}); same rules as xacro_args.',
-    )
-    ee_frame: Text | None = Field(
-        None,
-        max_length=256,
-        description="Default end-effector frame (default: the SRDF end effector's parent link, "
-        "else the tip of the longest serial chain that is not a gripper finger).",
-    )
-    summary: Text = Field("", max_length=1000, description="Short description of the robot.")
-
-
-class _PackageForm(PackageUpload):
-    archive: bytes = b""  # the file part is read apart; the text fields are validated here
-
-
 def _xacro_args(text: str | None, field: str = "xacro_args") -> dict[str, str]:
     """The ``xacro_args`` (or ``srdf_xacro_args``) form field: a JSON object of argument
     names to strings, numbers or booleans (:func:`app.robots.documents.xacro.check_xacro_args`)."""
@@ -122,7 +70,7 @@ def _xacro_args(text: str | None, field: str = "xacro_args") -> dict[str, str]:
     return check_xacro_args(args, field)
 
 
-def _add_package(reg: Registry, form: _PackageForm, archive: Any) -> dict[str, Any]:
+def _add_package(reg: Registry, form: PackageForm, archive: Any) -> dict[str, Any]:
     robot = reg.add_package(
         form.name,
         archive,
@@ -147,12 +95,14 @@ def _add_package(reg: Registry, form: _PackageForm, archive: Any) -> dict[str, A
     response_model=RobotDetail,
     dependencies=[Depends(require_token)],
     responses={
-        **_WRITE_ERRORS,
-        413: {**_WRITE_ERRORS[413], "description": "The body exceeds DENAVIT_MAX_PACKAGE_BYTES."},
+        **WRITE_ERRORS,
+        413: {**WRITE_ERRORS[413], "description": "The body exceeds DENAVIT_MAX_PACKAGE_BYTES."},
     },
     openapi_extra=body_schema(PackageUpload, ("multipart/form-data",)),
 )
-async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
+async def upload_robot_package(
+    request: Request, reg: RegistryDep, settings: SettingsDep
+) -> Response:
     """Add a robot from a description package (zip or tar.gz with its meshes); id ``name``.
 
     Form fields: ``name``, ``archive`` (the file), ``description`` (path inside the archive
@@ -177,7 +127,7 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
     is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
     form); 409 if the id is taken. Nothing is stored on any refusal.
     """
-    limit = request.app.state.settings.max_package_bytes
+    limit = settings.max_package_bytes
     body = await read_capped(
         request,
         limit,
@@ -219,10 +169,10 @@ async def upload_robot_package(request: Request, reg: RegistryDep) -> Response:
                 raise InvalidInputError("must be a text field, not a file", key)
             else:
                 fields[key] = value
-        parsed = validate_body(_PackageForm, fields)
+        parsed = validate_body(PackageForm, fields)
         if archive is None:
             raise InvalidInputError("the archive file is required", "archive")
-        return _created(await offload_upload(request, _add_package, reg, parsed, archive.file))
+        return created(await offload_upload(request, _add_package, reg, parsed, archive.file))
     finally:
         await form.close()
 

@@ -9,21 +9,19 @@ import numpy as np
 import pinocchio as pin
 from fastapi import APIRouter, Request
 
-from app.api.deps import RegistryDep, load_robot
+from app.api.deps import RobotDep, SettingsDep
 from app.api.errors import ERROR_RESPONSES
 from app.api.ik_request import (
     Collisions,
     accept_of,
-    check_budget,
-    check_request_budget,
     collisions_of,
     options_of,
     rng_of,
     target_of,
 )
+from app.api.limits import check_budget, check_request_budget
 from app.api.offload import offload_cancellable
 from app.api.responses import ORJSONResponse
-from app.api.schemas.common import RobotId
 from app.api.schemas.ik import Target
 from app.api.schemas.paths import ArcSegment, PathRequest, PathResponse
 from app.api.schemas.timing import TimingIn, timing_of
@@ -150,10 +148,7 @@ def _timing(robot: RobotModel, points: list, timing: TimingIn, grp: Group | None
     responses={k: ERROR_RESPONSES[k] for k in (400, 404, 422)},
 )
 async def solve_ik_path(
-    robot_id: RobotId,
-    body: PathRequest,
-    request: Request,
-    reg: RegistryDep,
+    robot: RobotDep, body: PathRequest, request: Request, settings: SettingsDep
 ) -> ORJSONResponse:
     """A joint path that moves a frame along lines and arcs, on one branch.
 
@@ -168,8 +163,7 @@ async def solve_ik_path(
     `ik_max_request_s` (else 422 naming `max_step`), which is also the path's deadline (past
     it, the path stops with `failure.reason: timeout`); the work stops when the client leaves.
     """
-    check_budget(request, body.timeout_ms)
-    robot = await load_robot(reg, robot_id)
+    check_budget(settings, body.timeout_ms)
     ik_options = options_of(robot, body)
     options = PathOptions(
         max_step=(body.max_step.position, body.max_step.orientation),
@@ -182,7 +176,7 @@ async def solve_ik_path(
     start = group_seed(robot, grp, body.start, "start")
     path = _path(body, start_pose(robot, start, ik_options))
     check_request_budget(
-        request,
+        settings,
         path.count(options.max_step),
         "points",
         body.timeout_ms,
@@ -201,6 +195,6 @@ async def solve_ik_path(
         rng_of(body),
         body.timing,
         grp,
-        time.perf_counter() + request.app.state.settings.ik_max_request_s,
+        time.perf_counter() + settings.ik_max_request_s,
     )
     return ORJSONResponse(out)

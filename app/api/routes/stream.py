@@ -1,11 +1,11 @@
 """``WS /robots/{robot_id}/stream``: FK, Jacobian and IK requests on one WebSocket.
 
 The protocol is in docs/stream.md; messages are parsed in :mod:`app.api.schemas.stream`.
-Answers are built by the HTTP routes' own functions (:func:`~app.api.routes.fk.fk_answer`,
-:func:`~app.api.routes.jacobian.jacobian_answer`, :func:`~app.api.routes.ik.prepare_ik`), with the
-same
-budget rules (``ik_max_timeout_ms``; an IK budget above 5 ms or collision checks run in the
-work pool), and errors carry the HTTP route's problem body.
+Answers are built by the HTTP routes' own functions (:func:`~app.api.answers.fk_answer`,
+:func:`~app.api.answers.jacobian_answer`, :func:`~app.api.ik_plan.prepare_ik` and
+:func:`~app.api.ik_answers.ik_answer`), with the same budget rules (``ik_max_timeout_ms``;
+an IK budget above 5 ms or collision checks run in the work pool), and errors carry the HTTP
+route's problem body.
 
 Answers go out in order. A reader task reads the socket while fewer than
 ``stream_max_in_flight`` messages are read but unanswered; at that many it stops reading
@@ -27,14 +27,14 @@ from fastapi import APIRouter, WebSocket
 from starlette.responses import Response
 from starlette.websockets import WebSocketDisconnect, WebSocketState
 
+from app.api.answers import fk_answer, jacobian_answer
 from app.api.deps import load_robot
 from app.api.errors import json_bytes, kinematics_problem, problem, problem_body
-from app.api.ik_request import check_budget
+from app.api.ik_answers import ik_answer
+from app.api.ik_plan import IKPlan, plan_ik, prepare_ik
+from app.api.limits import check_budget
 from app.api.offload import offload
 from app.api.responses import dumps
-from app.api.routes.fk import fk_answer
-from app.api.routes.ik import IKPlan, plan_ik, prepare_ik
-from app.api.routes.jacobian import jacobian_answer
 from app.api.schemas.ik import IKRequest
 from app.api.schemas.stream import (
     Message,
@@ -47,6 +47,7 @@ from app.api.schemas.stream import (
 from app.kinematics.errors import Cancelled, KinematicsError
 from app.kinematics.ik.problem import target_placement
 from app.kinematics.models import RobotModel
+from app.operations.settings import Settings
 
 log = logging.getLogger("denavit")
 
@@ -137,7 +138,7 @@ class _Session:
 
     def __init__(self, websocket: WebSocket, robot_id: str) -> None:
         self.ws, self.robot_id = websocket, robot_id
-        self.settings = websocket.app.state.settings
+        self.settings: Settings = websocket.app.state.settings
         self.path = f"/robots/{robot_id}/stream"
         self.robot: RobotModel | None = None
         self.last_q: np.ndarray | None = None
@@ -287,14 +288,14 @@ class _Session:
         elif message.op == "jacobian":
             return jacobian_answer(robot, body)  # type: ignore[arg-type]
         else:
-            check_budget(self.ws, body.timeout_ms)  # type: ignore[union-attr]
+            check_budget(self.settings, body.timeout_ms)  # type: ignore[union-attr]
             plan, solve = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
             inline, self.ik_body = plan.inline, body  # type: ignore[assignment]
             self.ik_plan = plan if plan.collisions is None else None
-        out = solve() if inline else await offload(solve, cancel=self.cancel)
-        if out["success"]:
-            self.last_q = np.array(out["q"])
-        return out
+        res = solve() if inline else await offload(self.ws, solve, cancel=self.cancel)
+        if res.success:
+            self.last_q = res.q
+        return ik_answer(robot, plan.options, res)
 
     def _binary_plan(self) -> IKPlan:
         """The plan of binary ik frames: the last JSON ik message's (the HTTP defaults',
@@ -302,7 +303,7 @@ class _Session:
         changed scene is seen as by a JSON message."""
         plan = self.ik_plan
         if plan is None:
-            check_budget(self.ws, self.ik_body.timeout_ms)
+            check_budget(self.settings, self.ik_body.timeout_ms)
             plan = plan_ik(self.ws, self.robot, self.ik_body)  # type: ignore[arg-type]
             if plan.collisions is None:
                 self.ik_plan = plan

@@ -7,8 +7,16 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, Field
 
-from app.api.routes.scenes import ObstacleIn
 from app.api.schemas.common import Finite, Matrix4, Position3, Quat, Schema, group_field
+from app.api.schemas.scenes import ObstacleIn
+from app.kinematics.collision import GEOMETRY_MODES
+from app.kinematics.ik.problem import (
+    DEFAULT_TIMEOUT_MS,
+    DEFAULT_TOLERANCE,
+    RANK_BY,
+    Mode,
+    Status,
+)
 
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
@@ -48,8 +56,12 @@ class Target(Schema):
 class Tolerance(Schema):
     """Success thresholds."""
 
-    position: Positive = Field(1e-5, description="Largest position error ‖p − p_t‖ (m).")
-    orientation: Positive = Field(1e-5, description="Largest rotation angle to the target (rad).")
+    position: Positive = Field(
+        DEFAULT_TOLERANCE[0], description="Largest position error ‖p − p_t‖ (m)."
+    )
+    orientation: Positive = Field(
+        DEFAULT_TOLERANCE[1], description="Largest rotation angle to the target (rad)."
+    )
 
 
 class IKTaskIn(Schema):
@@ -60,7 +72,7 @@ class IKTaskIn(Schema):
         None, description="Frame to place; default the end effector (with `group`: its tip)."
     )
     group: str | None = group_field()
-    mode: Literal["pose", "position", "orientation"] = Field("pose", description=MODE_DOC)
+    mode: Mode = Field("pose", description=MODE_DOC)
     weights: Annotated[list[NonNegative], Field(min_length=6, max_length=6)] | None = Field(
         None,
         description="Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); "
@@ -68,7 +80,8 @@ class IKTaskIn(Schema):
     )
     tolerance: Tolerance = Field(default_factory=Tolerance)
     timeout_ms: Positive = Field(
-        5.0, description="Time budget (ms) per target; capped by the server's ik_max_timeout_ms."
+        DEFAULT_TIMEOUT_MS,
+        description="Time budget (ms) per target; capped by the server's ik_max_timeout_ms.",
     )
     max_iterations: int | None = Field(
         None, ge=1, le=10_000_000, description="Cap on solver iterations (Jacobian evaluations)."
@@ -88,7 +101,7 @@ class IKTaskIn(Schema):
     margin: NonNegative = Field(
         0.0, le=10.0, description="With avoid_collisions: clearance (m) a solution must keep."
     )
-    collision_geometry: Literal["mesh", "convex"] = Field(
+    collision_geometry: Literal[GEOMETRY_MODES] = Field(
         "mesh", description="With avoid_collisions: meshes, or their convex hulls (faster)."
     )
     random_seed: int | None = Field(
@@ -129,7 +142,7 @@ class IKRequest(IKOptionsIn):
         description="Distinct solutions wanted: one per branch (shoulder/elbow/wrist flags "
         "where the arm has them, else clusters in joint space; see docs/ik.md).",
     )
-    rank_by: Literal["seed_distance", "manipulability", "clearance"] = Field(
+    rank_by: Literal[RANK_BY] = Field(
         "seed_distance",
         description="Order of the solutions: seed_distance (smallest largest-joint move "
         "first) | manipulability (largest Yoshikawa measure first) | clearance (largest "
@@ -168,7 +181,7 @@ class IKResponse(BaseModel):
     frame: str
     mode: str
     success: bool
-    status: Literal["converged", "not_converged", "timeout"]
+    status: Status
     q: list[float] = Field(description="Best configuration (first solution, or lowest error).")
     joint_positions: dict[str, float]
     position_error: float = Field(description="Of q: ‖p − p_t‖ (m).")
@@ -203,7 +216,7 @@ class IKBatchItem(BaseModel):
     """Result for one target."""
 
     success: bool
-    status: Literal["converged", "not_converged", "timeout"]
+    status: Status
     q: list[float]
     position_error: float
     orientation_error: float

@@ -21,10 +21,10 @@ import numpy as np
 from pydantic import ValidationError
 
 from app.api.errors import NESTED_TOO_DEEPLY, problem_body, validation_problem
-from app.api.routes.fk import FKRequest
-from app.api.routes.jacobian import JacobianRequest
 from app.api.schemas.common import Schema
+from app.api.schemas.fk import FKRequest
 from app.api.schemas.ik import IKRequest
+from app.api.schemas.jacobian import JacobianRequest
 from app.kinematics.text import printable
 
 #: Each op: its HTTP request model (the message's body is validated by it).

@@ -21,7 +21,6 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import pinocchio as pin
@@ -55,22 +54,6 @@ def target_rng(random_seed: int | None, index: int) -> np.random.Generator | Non
     return np.random.default_rng(np.random.SeedSequence(random_seed, spawn_key=(index,)))
 
 
-def result_entry(res: ik.IKResult) -> dict[str, Any]:
-    """One target's answer in a batch response (wire form; q in wire order, rad / m)."""
-    return {
-        "success": res.success,
-        "status": res.status,
-        "q": res.q.tolist(),
-        "position_error": res.position_error,
-        "orientation_error": res.orientation_error,
-        "iterations": res.iterations,
-        "restarts": res.restarts,
-        "solve_time_ms": res.solve_time_ms,
-        "reason": res.reason,
-        "detail": res.detail,
-    }
-
-
 def collision_accept(
     robot: RobotModel, collisions: Collisions | None
 ) -> Callable[[np.ndarray], bool] | None:
@@ -89,10 +72,11 @@ def solve_targets(
     start: int = 0,
     cancel: threading.Event | None = None,
     record: Callable[[bool], None] | None = None,
-) -> list[dict[str, Any]]:
+) -> list[ik.IKResult]:
     """Solve each target from ``task.seed`` in this thread; target ``i`` is target
     ``start + i`` of its batch (it picks the generator, :func:`target_rng`). ``record`` is
-    called with each outcome as it comes."""
+    called with each outcome as it comes. The results are plain data (they cross process
+    boundaries, :mod:`app.workers.ik_batch`); the API writes their wire form."""
     accept = collision_accept(robot, task.collisions)
     out = []
     for i, T in enumerate(targets):
@@ -107,5 +91,5 @@ def solve_targets(
         )
         if record is not None:
             record(res.success)
-        out.append(result_entry(res))
+        out.append(res)
     return out

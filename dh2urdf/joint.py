@@ -1,0 +1,82 @@
+"""A DH table's rows and frames: :class:`DHJoint` (one row, SI), :class:`Transform` (a fixed
+base or tool frame) and the value sets a table's fields take. The table itself is
+:class:`dh2urdf.table.DHTable`; the checks that build these from a document are in
+:mod:`dh2urdf.parse`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+
+from dh2urdf.math import xyz_rpy_to_matrix
+
+Convention = Literal["standard", "modified"]
+JointType = Literal["revolute", "prismatic", "continuous"]
+
+CONVENTIONS: tuple[str, ...] = ("standard", "modified")
+JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic", "continuous")
+#: Radius (m) of the generated capsules when the table has no ``geometry`` section.
+DEFAULT_GEOMETRY_RADIUS = 0.02
+
+
+@dataclass(frozen=True, slots=True)
+class Transform:
+    """A rigid transform written as a URDF origin: translation ``xyz`` (m) then ``rpy`` (rad).
+
+    The matrix is ``T(xyz) · Rz(yaw) · Ry(pitch) · Rx(roll)`` with ``rpy = (roll, pitch, yaw)``.
+    """
+
+    xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+    @property
+    def is_identity(self) -> bool:
+        """Whether both translation and rotation are exactly zero."""
+        return all(v == 0.0 for v in self.xyz + self.rpy)
+
+    def matrix(self) -> np.ndarray:
+        """The 4×4 homogeneous transform."""
+        return xyz_rpy_to_matrix(self.xyz, self.rpy)
+
+
+@dataclass(frozen=True, slots=True)
+class DHJoint:
+    """One row of a DH table, in SI units (m, rad).
+
+    Attributes
+    ----------
+    name : str
+        Joint name (unique in the table).
+    type : {"revolute", "prismatic", "continuous"}
+        Joint kind. Revolute and continuous joints turn about their DH z axis, prismatic
+        joints slide along it.
+    a, alpha, d, theta : float
+        DH parameters (m, rad, m, rad). ``theta`` is the constant offset of a revolute joint
+        (θ = q + theta), ``d`` the constant offset of a prismatic joint (d = q + d). In the
+        modified convention ``a`` and ``alpha`` are ``a_{i-1}`` and ``α_{i-1}``.
+    lower, upper : float or None
+        Position limits of the joint variable q (rad or m); ``None`` for continuous joints.
+    velocity : float
+        Velocity limit (rad/s or m/s).
+    effort : float
+        Effort limit (N·m or N).
+    """
+
+    name: str
+    type: JointType
+    a: float
+    alpha: float
+    d: float
+    theta: float
+    lower: float | None
+    upper: float | None
+    velocity: float
+    effort: float
+
+    @property
+    def is_prismatic(self) -> bool:
+        """Whether the joint slides (its variable is a length)."""
+        return self.type == "prismatic"
