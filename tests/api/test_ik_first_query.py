@@ -77,3 +77,24 @@ def test_health_answers_while_the_table_is_built(client, registry, monkeypatch) 
         ik.join(timeout=120)
     assert answers == [200]
     assert health == [200]
+
+
+def test_the_stream_builds_the_restart_table_off_the_event_loop(
+    client, registry, monkeypatch
+) -> None:
+    """The stream's first IK message of a robot and frame is the same first query."""
+    calls: list[bool] = []
+    real = precompute.table_poses
+
+    def spy(robot, ch):
+        calls.append(_on_event_loop())
+        return real(robot, ch)
+
+    monkeypatch.setattr(precompute, "table_poses", spy)
+    message = {"id": 1, "op": "ik", "target": _target(registry), "frame": "panda_link8"}
+    with client.websocket_connect("/robots/panda/stream") as ws:
+        ws.send_json(message)
+        assert ws.receive_json()["id"] == 1
+        ws.send_json({**message, "id": 2})
+        assert ws.receive_json()["id"] == 2
+    assert calls == [False]  # built once, in the pool

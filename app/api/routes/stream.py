@@ -44,6 +44,7 @@ from app.api.schemas.stream import (
     parse_text,
     route_path,
 )
+from app.kinematics import ik
 from app.kinematics.errors import Cancelled, KinematicsError
 from app.kinematics.ik.problem import target_placement
 from app.kinematics.models import RobotModel
@@ -292,6 +293,8 @@ class _Session:
             plan, solve = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
             inline, self.ik_body = plan.inline, body  # type: ignore[assignment]
             self.ik_plan = plan if plan.collisions is None else None
+        # the chain's first build (the restart table) runs in the pool, never on the loop
+        inline = inline and ik.chain_ready(robot, plan.options)
         res = solve() if inline else await offload(self.ws, solve, cancel=self.cancel)
         if res.success:
             self.last_q = res.q
