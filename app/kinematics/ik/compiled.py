@@ -31,6 +31,7 @@ from app.kinematics.ik.dls import (
     STALL,
 )
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE
+from app.kinematics.ik.scale import rotation_weight
 from app.kinematics.ik.search import NEAREST, NEAREST_RATIO
 
 if TYPE_CHECKING:
@@ -84,7 +85,8 @@ def pack(ch: IKChain) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     redundant = ch.k > 6
     cp = ik_search_kernel.pack_chain(
         cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, ch.clip_lo, ch.clip_hi, ch.cont_mask,
-        DAMP, MU, NULL_GAIN, 1.0 / NULL_ENERGY, NULL_FLOOR, MAX_STEP, NEAREST_RATIO, ROT_WEIGHT,
+        DAMP, MU, NULL_GAIN, 1.0 / NULL_ENERGY, NULL_FLOOR, MAX_STEP, NEAREST_RATIO,
+        rotation_weight(ch._robot, ch.frame_id, ROT_WEIGHT),  # the chain's (ik.scale)
     )  # fmt: skip
     M, W2 = ch.sample_poses()
     tab32 = np.ascontiguousarray(np.vstack((M.T, W2[None])), dtype=np.float32)

@@ -22,10 +22,12 @@ from app.kinematics import analytic_ik, ik_kernel
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group
 from app.kinematics.ik import compiled as driver  # imported first by the package: no cycle
+from app.kinematics.ik.scale import rotation_weight
 from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 
-#: Weight of the rotation distance (‖R − R_t‖²_F) against the position distance (m²) in
-#: the ranking of table samples by pose distance to a target.
+#: Weight (m²) of the rotation distance (‖R − R_t‖²_F) against the position distance (m²)
+#: in the ranking of table samples by pose distance to a target, for chains 0.4–2.5 m long;
+#: scaled with the length outside (:func:`app.kinematics.ik.scale.rotation_weight`).
 ROT_WEIGHT = 0.2
 #: Seed and size of the per-chain table of restart configurations.
 RNG_SEED = 0x1C0DE
@@ -114,17 +116,18 @@ class IKChain:
             robot = self._robot
             model, data = robot.model, robot.model.createData()
             q = self.mid_range.copy()
+            c = rotation_weight(robot, self.frame_id, ROT_WEIGHT)
             W = np.empty((TABLE, 12))
             for i, row in enumerate(self.restart_table):
                 q[self.active] = row
                 pin.forwardKinematics(model, data, robot.to_pin(q))
                 T = pin.updateFramePlacement(model, data, self.frame_id)
                 W[i, :3] = T.translation
-                W[i, 3:] = ROT_WEIGHT * T.rotation.ravel()
+                W[i, 3:] = c * T.rotation.ravel()
             P = W[:, :3]
             # float32: the ranking needs no more, and the product runs twice as fast.
             M = (-2.0 * W).astype(np.float32)
-            self._poses = (M, (np.einsum("ij,ij->i", P, P) + 3.0 * ROT_WEIGHT).astype(np.float32))
+            self._poses = (M, (np.einsum("ij,ij->i", P, P) + 3.0 * c).astype(np.float32))
             if ik_kernel.available():
                 self._poses_T = np.ascontiguousarray(M.T)
         return self._poses
@@ -139,7 +142,7 @@ class IKChain:
         M, W2 = self.sample_poses()
         pt = target.translation
         x = np.concatenate((pt, target.rotation.ravel())).astype(np.float32)
-        k_t = float(pt @ pt) + 3.0 * ROT_WEIGHT
+        k_t = float(pt @ pt) + 3.0 * rotation_weight(self._robot, self.frame_id, ROT_WEIGHT)
         if self._poses_T is not None:
             d = np.empty(TABLE, dtype=np.float32)
             i = ik_kernel.sample_distances(self._poses_T, W2, x, d)

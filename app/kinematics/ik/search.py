@@ -26,8 +26,11 @@ from app.kinematics.ik.failure import classify, outside_limits
 from app.kinematics.ik.precompute import ROT_WEIGHT, TABLE, k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
 from app.kinematics.ik.ranking import Grouping, joint_distance, representatives
+from app.kinematics.ik.scale import joint_units, length_scale, rotation_weight
 
-#: Two solutions are distinct when some joint differs by more than this (rad or m).
+#: Two solutions are distinct when some revolute joint differs by more than this (rad), or
+#: some prismatic joint by more than this times the chain's length scale (m; a 1 m chain:
+#: 1 mm, :mod:`app.kinematics.ik.scale`).
 DISTINCT = 1e-3
 #: Restarts taken from the table samples nearest the target before random jumps.
 NEAREST = 32
@@ -206,9 +209,11 @@ class Search:
             return False
         if not (math.isfinite(ep_full) and math.isfinite(er_full)):
             return False  # a pose that overflows float64 (even on unchecked components)
-        for s in self.solutions:
-            if joint_distance(robot, s.q, q).max() <= DISTINCT:
-                return False
+        if self.solutions:
+            same = DISTINCT * joint_units(robot, length_scale(robot, self.ch.frame_id))
+            for s in self.solutions:
+                if (joint_distance(robot, s.q, q) <= same).all():
+                    return False
         if self.accept is not None and not self.accept(q):
             self.rejected += 1
             return False
@@ -267,7 +272,8 @@ class Search:
         """
         d, k_t, i = self.ch.sample_distances_argmin(self.target)
         self.distances, self.nearest_one = d, i
-        d_seed = ep2 + (2.0 * ROT_WEIGHT) * (3.0 - trace)
+        c = rotation_weight(self.robot, self.ch.frame_id, ROT_WEIGHT)
+        d_seed = ep2 + (2.0 * c) * (3.0 - trace)
         return d[i] + k_t < NEAREST_RATIO * d_seed
 
     def restart(self) -> np.ndarray:
