@@ -18,6 +18,7 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
+from app.kinematics.ik.failure import classify
 from app.kinematics.ik.precompute import ROT_WEIGHT, ik_chain, k_smallest
 from app.kinematics.ik.problem import IKOptions, IKProblem
 from app.kinematics.ik.scale import RANKING_BAND, length_scale, rotation_weight
@@ -163,3 +164,25 @@ def test_restart_ranking_beyond_the_band_is_scale_equivariant(
             nearest.append((i, set(k_smallest(d, 8).tolist())))
         agree += nearest[0] == nearest[1]
     assert agree >= 19, f"{agree} of 20 targets ranked alike"
+
+
+@pytest.mark.parametrize("s", SCALES)
+def test_ik_failure_singular_verdicts_are_the_same_at_every_scale(s: float) -> None:
+    """The IK failure reason of a search that stalled at the elbow angle e, the target out
+    of reach: ``singular`` exactly when the written-out dimensionless σ_min is below
+    SINGULAR_SIGMA (1e-3), at ×1, ×10 and ×0.05. Before: the raw σ_min (×0.05: every
+    elbow below 0.07 rad singular; ×10: none above 0.0007)."""
+    l1, l2 = 0.9, 0.6
+    robot = RobotModel("p", scaled(planar_2link(l1, l2), s), ee_frame="tip")
+    options = IKOptions(frame="tip", mode="position", weights=(1, 1, 0, 0, 0, 0))
+    target = pin.SE3(np.eye(3), np.array([2.0 * s, 0.5 * s, 0.0]))  # beyond l1 + l2
+    ch = ik_chain(robot, "tip")
+    reasons = []
+    for elbow in (0.0005, 0.003, 0.005, 0.05):
+        q = np.array([0.3, elbow])
+        search = Search(IKProblem(robot, ch, target, q, options, options.task()))
+        reason, _ = classify(search, q, 1.0 * s, 0.0, 10)
+        expected = "singular" if planar_sigma(l1, l2, q) < 1e-3 else "timeout"
+        assert reason == expected, (elbow, reason)
+        reasons.append(reason)
+    assert reasons == ["singular", "singular", "timeout", "timeout"]
