@@ -1,7 +1,7 @@
 """Analysis and reachability benchmarks: ``python -m bench analysis``.
 
 1. Raw in-process FK rate: ``pin.forwardKinematics`` + ``pin.updateFramePlacement`` in a
-   Python loop over pre-converted Pinocchio configurations (the reference of the issue).
+   Python loop over pre-converted Pinocchio configurations (the reference).
 2. Reachability build throughput (samples/s, FK + Jacobian + manipulability + binning +
    merge), in the calling thread (one core) and over worker processes (every core, process
    start-up included), and the ratio to (1).

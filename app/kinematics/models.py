@@ -179,7 +179,8 @@ class RobotModel:
         root = parse_literal_xml(urdf_text, "urdf", TRUSTED)  # the one parse of the URDF here
         self.model: pin.Model = build_model(urdf_text, root)  # mimic joints as ROS reads them
         self._local = threading.local()
-        self._lock = threading.Lock()
+        # reentrant: a companion's build may ask for another (an IK chain, its length scale)
+        self._lock = threading.RLock()
         self._extras: dict[str, object] = {}  # lazily built companions (:meth:`lazy`)
         self.mesh_limits = MeshLimits()  # bounds on its collision meshes (the registry's)
 

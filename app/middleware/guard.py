@@ -11,9 +11,13 @@ its answers carry the request id and are counted and access-logged like any othe
   client's next request on it failed with a reset. Handled here, the connection stays open
   for the next request.
 - **A request cancelled by the server** (uvicorn cancels the requests still running when
-  ``DENAVIT_GRACEFUL_TIMEOUT_S`` runs out after SIGTERM; nothing else cancels a request
-  task) is answered ``503`` problem+json with ``Connection: close`` and ``Retry-After``
-  instead of uvicorn's plain-text 500.
+  ``DENAVIT_GRACEFUL_TIMEOUT_S`` runs out after SIGTERM; a client that disconnects does not
+  cancel the task, :func:`app.api.offload.offload_cancellable` answers it 499) is answered
+  ``503`` problem+json with ``Connection: close`` and ``Retry-After`` instead of uvicorn's
+  plain-text 500, and the ``CancelledError`` is raised again: the task stays cancelled
+  (whoever cancelled it, e.g. a timeout or task group around the app, sees it end
+  cancelled). uvicorn then logs the cancellation ("Exception in ASGI application") and
+  closes the connection after the 503, which said ``Connection: close``.
 
 If the response had already started, neither can be answered any more: the exception goes
 on to uvicorn, which closes the connection (the only way left to tell the client that the
@@ -78,11 +82,7 @@ class ErrorGuardMiddleware:
                 kind="shutting-down",
                 headers={"connection": "close", "retry-after": str(RETRY_AFTER_S)},
             )
-            # Answered: the cancellation has done its job (the request is over). Not
-            # re-raised, or uvicorn would log it as an error and answer nothing more.
-            task = asyncio.current_task()
-            if task is not None:
-                task.uncancel()
+            raise  # answered, and still cancelled: never swallow a cancellation
 
 
 async def _answer(

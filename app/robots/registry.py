@@ -88,8 +88,9 @@ class Registry:
     A stored robot that cannot be read back (a record damaged on disk) is left out of the
     listing or answered with a 409 naming it, never a 500.
 
-    Thread-safe: models are built under a lock; a built model is immutable apart from its
-    per-thread Data.
+    Thread-safe: each robot is built under a lock of its own (one build per robot at a time;
+    a slow build never delays another robot), and the shared dicts change under one short
+    lock. A built model is immutable apart from its per-thread Data.
     """
 
     def __init__(
@@ -102,7 +103,8 @@ class Registry:
         self.dh_builtin = load_dh_builtins(exclude=self.catalog)
         self.store = RobotStore(Path(data_dir) / "robots") if data_dir is not None else None
         self._cache: dict[str, RobotModel] = {}
-        self._lock = threading.Lock()
+        self._lock = threading.Lock()  # the dicts below: held for a lookup or a write only
+        self._build_locks: dict[str, threading.Lock] = {}
         self._user_lock = threading.Lock()
         self._user: dict[str, StoredRobot] = {}
         self._user_models: dict[str, tuple[str, RobotModel]] = {}
@@ -127,11 +129,12 @@ class Registry:
             token = self.store.token()  # before listing: a change while listing is seen next
             if token != self._user_token:
                 listing = self.store.list()
-                self._user_models = {
-                    rid: entry
-                    for rid, entry in self._user_models.items()
-                    if rid in listing and listing[rid].revision == entry[0]
-                }
+                with self._lock:
+                    self._user_models = {
+                        rid: entry
+                        for rid, entry in self._user_models.items()
+                        if rid in listing and listing[rid].revision == entry[0]
+                    }
                 self._user = listing
                 self._user_token = token
             return self._user
@@ -147,15 +150,9 @@ class Registry:
         out += [e.summary() for e in self.dh_builtin.values()]
         for rid, stored in self._refresh().items():
             meta = stored.meta  # validated by RobotStore.load: strings are valid text
-            out.append(
-                RobotSummary(
-                    rid,
-                    meta.get("name") or rid,
-                    meta.get("source") or "upload",
-                    meta.get("joints") or 0,
-                    meta.get("description") or "",
-                )
-            )
+            name, source = meta.get("name") or rid, meta.get("source") or "upload"
+            joints, description = meta.get("joints") or 0, meta.get("description") or ""
+            out.append(RobotSummary(rid, name, source, joints, description))
         return out
 
     def is_builtin(self, robot_id: str) -> bool:
@@ -186,7 +183,7 @@ class Registry:
             return robot
         entry = self.catalog.get(robot_id) or self.dh_builtin.get(robot_id)
         if entry is not None:
-            with self._lock:
+            with self._build_lock(robot_id):
                 robot = self._cache.get(robot_id)
                 if robot is None:
                     robot = self._cache[robot_id] = entry.build()
@@ -194,13 +191,16 @@ class Registry:
         stored = self._refresh().get(robot_id)
         if stored is None:
             raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
-        with self._lock:
+        with self._build_lock(robot_id):
             cached = self._user_models.get(robot_id)
             if cached is not None and cached[0] == stored.revision:
                 return cached[1]
-            robot = self._build_stored(stored)
-            self._user_models = {**self._user_models, robot_id: (stored.revision, robot)}
-        return robot
+            return self._stored(stored, self._build_stored(stored))
+
+    def _build_lock(self, robot_id: str) -> threading.Lock:
+        """The lock one robot's build holds (created on first use, kept for the id)."""
+        with self._lock:
+            return self._build_locks.setdefault(robot_id, threading.Lock())
 
     def _build_stored(self, stored: StoredRobot) -> RobotModel:
         """The model of a stored robot; a record that cannot be served is a 409 naming it.
@@ -242,15 +242,11 @@ class Registry:
         except InvalidInputError as exc:  # our own checks: the message holds no host detail
             reason = exc
             why = f"it fails today's checks: {exc.field}: {exc.message}"
-        except (
-            KinematicsError,
-            OSError,
-            ValueError,
-            RuntimeError,
-            IndexError,
-            KeyError,
-            TypeError,
-        ) as exc:
+        except (KinematicsError, OSError, ValueError, RuntimeError) as exc:
+            # What a record the current code cannot read raises: the file (OSError, bytes
+            # that are not UTF-8), the parser (Pinocchio's RuntimeError/ValueError), the
+            # model checks (KinematicsError). Anything else is a bug: a 500 with its
+            # traceback (app.middleware.guard), not "delete it and add it again".
             reason = exc
         log.error("stored robot %r cannot be loaded: %r", stored.id, reason)
         raise ConflictError(
@@ -316,7 +312,9 @@ class Registry:
         return self.store
 
     def _stored(self, stored: StoredRobot, robot: RobotModel) -> RobotModel:
-        self._user_models = {**self._user_models, stored.id: (stored.revision, robot)}
+        """Cache a user-added robot's model (copy on write: readers take no lock)."""
+        with self._lock:
+            self._user_models = {**self._user_models, stored.id: (stored.revision, robot)}
         return robot
 
     def import_dh(self, table: DHTable) -> RobotModel:
@@ -497,4 +495,5 @@ class Registry:
         if self.store is None:
             raise UnknownNameError("robot", robot_id, "robot_id", self.ids())
         self.store.delete(robot_id)
-        self._user_models = {k: v for k, v in self._user_models.items() if k != robot_id}
+        with self._lock:
+            self._user_models = {k: v for k, v in self._user_models.items() if k != robot_id}

@@ -421,7 +421,8 @@ class BuildJobs:
             self.store.save(ReachabilityMap(meta, best))
         except Cancelled:
             outcome: tuple[str, str | None, str | None] = ("cancelled", None, None)
-        except Exception as exc:  # reported on the job, not raised into the void
+        except Exception as exc:  # reported on the job (and logged), not raised into the void
+            log.exception("reachability build job %s failed", job.job_id)
             outcome = ("failed", None, f"{type(exc).__name__}: {exc}")
         else:
             outcome = ("done", meta["map_id"], None)

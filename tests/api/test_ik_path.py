@@ -17,8 +17,8 @@ from tests.helpers import problem, serve
 from tests.kinematics.reference import pose_error, reference_pose, reference_velocity_limits
 
 UR5_START = [0.1, -1.4, 1.2, -0.5, 1.0, 0.3]
-#: The issue's request, as written.
-ISSUE_BODY = {
+#: A request as a client writes it: one straight line, the step bounds, a seed.
+LINE_BODY = {
     "start": UR5_START,
     "frame": "tool0",
     "segments": [
@@ -67,8 +67,8 @@ def _check_line(registry, robot_id, frame, out, T0, T1, max_joint_step, tol=1e-5
         assert dp <= tol and dr <= tol, (p["s"], dp, dr)
 
 
-def test_the_issue_request_as_written(client, registry) -> None:
-    r = client.post("/robots/ur5/ik/path", json=ISSUE_BODY)
+def test_a_line_request_as_a_client_writes_it(client, registry) -> None:
+    r = client.post("/robots/ur5/ik/path", json=LINE_BODY)
     assert r.status_code == 200, r.text
     out = r.json()
     assert out["solver_version"] and out["frame"] == "tool0"
@@ -246,7 +246,7 @@ def test_same_random_seed_same_answer_on_two_workers(tmp_path) -> None:
     ],
 )
 def test_bad_requests_name_the_field(client, change, field) -> None:
-    body = {k: v for k, v in {**ISSUE_BODY, **change}.items() if v is not None}
+    body = {k: v for k, v in {**LINE_BODY, **change}.items() if v is not None}
     problem(client.post("/robots/ur5/ik/path", json=body), 422, field)
 
 
@@ -268,7 +268,7 @@ def test_collinear_arc_and_too_many_points_are_422(client, registry) -> None:
 
 
 def test_unknown_robot_is_404(client) -> None:
-    problem(client.post("/robots/nope/ik/path", json=ISSUE_BODY), 404)
+    problem(client.post("/robots/nope/ik/path", json=LINE_BODY), 404)
 
 
 def test_timing_respects_the_limits_at_every_point(client, registry) -> None:
@@ -306,9 +306,9 @@ def test_timing_respects_the_limits_at_every_point(client, registry) -> None:
 
 
 def test_timing_errors_name_the_field(client) -> None:
-    body = {**ISSUE_BODY, "timing": {"acceleration_limits": [1.0, 2.0]}}
+    body = {**LINE_BODY, "timing": {"acceleration_limits": [1.0, 2.0]}}
     problem(client.post("/robots/ur5/ik/path", json=body), 422, "timing.acceleration_limits")
-    body = {**ISSUE_BODY, "timing": {"acceleration_limits": {"elbow": 1.0}}}
+    body = {**LINE_BODY, "timing": {"acceleration_limits": {"elbow": 1.0}}}
     problem(client.post("/robots/ur5/ik/path", json=body), 422, "timing.acceleration_limits.elbow")
 
 
@@ -318,7 +318,7 @@ def test_the_request_budget_is_the_paths_deadline(client, monkeypatch) -> None:
     from app.kinematics.paths import follow
 
     monkeypatch.setattr(follow, "_clock", lambda: 1e18)
-    out = client.post("/robots/ur5/ik/path", json=ISSUE_BODY).json()
+    out = client.post("/robots/ur5/ik/path", json=LINE_BODY).json()
     f = out["failure"]
     assert f["reason"] == "timeout" and "budget" in f["detail"], f
     assert out["fraction"] == 0.0 and len(out["points"]) == 1 and f["index"] == 1

@@ -1,4 +1,4 @@
-"""POST /robots/package with MJCF read as MuJoCo compiles it (issue 26, defects 4, 5 and 6).
+"""POST /robots/package with MJCF read as MuJoCo compiles it.
 
 The reference is MuJoCo itself: ``mj_kinematics`` on the same ``qpos`` gives every body's and
 site's pose (``xpos``/``xmat``, ``site_xpos``/``site_xmat``) and every geom's
@@ -6,12 +6,12 @@ site's pose (``xpos``/``xmat``, ``site_xpos``/``site_xmat``) and every geom's
 configurations (fixed seed). A mimic follower, which ``mj_kinematics`` leaves where
 ``qpos`` says, is given the value its ``<equality>`` asks.
 
-- 4: default classes set a mesh's ``scale`` and a joint's ``pos`` (and ``ref``) through a
+- Default classes set a mesh's ``scale`` and a joint's ``pos`` (and ``ref``) through a
   ``childclass``: the stored URDF keeps the scale, the mesh file's vertices are where
   MuJoCo puts the compiled mesh, FK matches.
-- 5: a Menagerie-style ``scene.xml`` including the robot file (with a ``<keyframe>``),
+- A Menagerie-style ``scene.xml`` including the robot file (with a ``<keyframe>``),
   a floor plane, lights and textures loads; the floor is not part of the robot.
-- 6: the default tip of a gripper arm is its TCP site, not a finger; the site is a frame;
+- The default tip of a gripper arm is its TCP site, not a finger; the site is a frame;
   materials and ``rgba`` reach GET /robots/{id}/urdf.
 - What the service cannot model is a 422 naming the element (a ball or free joint, a
   nonlinear or tendon coupling, a loop, a site named like a body), and nothing is stored.
@@ -201,7 +201,7 @@ def _origin(element: ET.Element) -> np.ndarray:
 
 
 def test_default_classes_set_mesh_scale_and_joint_anchor(client: TestClient) -> None:
-    """Defect 4: mesh scale and joint pos from default classes, as MuJoCo compiles them."""
+    """Mesh scale and joint pos from default classes, as MuJoCo compiles them."""
     resp = _upload(client, _files(), "mini/mini.xml")
     assert resp.status_code == 201, resp.text
     reference = mujoco.MjModel.from_xml_string(MINI, {"assets/finger.stl": FINGER_STL})
@@ -229,7 +229,7 @@ def test_default_classes_set_mesh_scale_and_joint_anchor(client: TestClient) -> 
 
 
 def test_menagerie_scene_with_keyframe_loads_without_its_floor(client: TestClient) -> None:
-    """Defect 5: scene.xml (the robot included, its keyframe, a floor) loads."""
+    """scene.xml (the robot included, its keyframe, a floor) loads."""
     resp = _upload(client, _files(**{"scene.xml": SCENE}), "mini/scene.xml")
     assert resp.status_code == 201, resp.text
     assets = {"assets/finger.stl": FINGER_STL, "mini.xml": MINI.encode()}
@@ -242,7 +242,7 @@ def test_menagerie_scene_with_keyframe_loads_without_its_floor(client: TestClien
 
 
 def test_gripper_arm_tips_at_its_tcp_site_with_colours(client: TestClient) -> None:
-    """Defect 6: the tip is the TCP site (a frame), not a finger; colours survive."""
+    """The tip is the TCP site (a frame), not a finger; colours survive."""
     assert _upload(client, _files(), "mini/mini.xml").status_code == 201
     detail = client.get("/robots/mini").json()
     assert detail["end_effector"] == "tcp"

@@ -352,6 +352,26 @@ def test_a_bug_in_one_message_is_a_500_error_message_and_the_socket_stays_usable
         assert ws.receive_json()["jacobian"]
 
 
+def test_a_reader_crash_closes_1011_and_logs_its_traceback(client, monkeypatch, caplog) -> None:
+    """A bug in the socket's reader (here: measuring a message) ends the socket with 1011
+    and leaves its traceback in the log (before: a silent 1011)."""
+    from app.api.routes import stream
+
+    def buggy_size(message: dict) -> int:
+        raise ZeroDivisionError("a bug in the reader, on purpose")
+
+    monkeypatch.setattr(stream, "_size", buggy_size)
+    with caplog.at_level("ERROR", logger="denavit"):
+        with client.websocket_connect("/robots/ur5/stream") as ws:
+            send(ws, {"id": 1, "op": "fk", "q": Q_UR5})
+            with pytest.raises(WebSocketDisconnect) as info:
+                ws.receive_json()
+    assert info.value.code == 1011
+    [record] = [r for r in caplog.records if r.exc_info is not None]
+    assert record.exc_info[0] is ZeroDivisionError and "/robots/ur5/stream" in record.getMessage()
+    assert "buggy_size" in caplog.text
+
+
 def test_plain_http_to_the_stream_is_told_to_upgrade(client) -> None:
     resp = client.get("/robots/ur5/stream")
     assert resp.status_code == 426

@@ -73,6 +73,43 @@ def test_picker_switches_robot(page: Tab) -> None:
     assert page.errors() == []
 
 
+def test_only_the_latest_choice_renders_when_loads_finish_out_of_order(page: Tab) -> None:
+    """Panda is chosen, then puma560; Panda's URDF is held back (route interception) until
+    puma560 is shown, then let through. The page must keep showing puma560 (before: the
+    late Panda load rendered over it while the picker said puma560)."""
+    open_viewer(page, "ur5")
+    held = []
+
+    def hold(route) -> None:  # answered when the test says
+        held.append(route)
+
+    page.page.route("**/robots/panda/urdf", hold)
+    with page.page.expect_request("**/robots/panda/urdf"):
+        page.page.select_option("#robot-picker", "panda")
+    page.page.select_option("#robot-picker", "puma560")
+    page.page.wait_for_function("denavit.viewer.detail.id === 'puma560' && denavit.viewer.ready")
+    assert len(held) == 1
+    held[0].continue_()
+    # Panda's load has settled: dropped (loading back to 0), or rendered (the defect).
+    page.page.wait_for_function(
+        "denavit.viewer.loading === 0 || denavit.viewer.detail.id === 'panda'"
+    )
+    wait_idle(page)
+    viewer = "denavit.viewer"
+    assert page.page.evaluate(f"{viewer}.detail.id") == "puma560"
+    assert page.page.evaluate(f"{viewer}.robot.detail.id") == "puma560"
+    assert page.page.evaluate(f"{viewer}.stage.world.children.includes({viewer}.robot.root)")
+    robots_on_stage = page.page.evaluate(
+        f"{viewer}.stage.world.children.filter((o) => o.isURDFRobot).length"
+    )
+    assert robots_on_stage == 1
+    assert page.page.evaluate("document.querySelector('#robot-picker').value") == "puma560"
+    assert page.page.url.endswith("/viewer/puma560")
+    puma = page.http.get("/robots/puma560").json()
+    assert page_q(page) == puma["neutral"]
+    assert page.errors() == []
+
+
 # ------------------------------------------------------------------------ sliders → FK
 def test_slider_moves_rendered_pose_and_fk_readout_to_the_api_value(page: Tab) -> None:
     robot = open_viewer(page, "panda")

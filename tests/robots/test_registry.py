@@ -7,6 +7,7 @@ dh2urdf and Pinocchio).
 from __future__ import annotations
 
 import math
+import threading
 from pathlib import Path
 
 import numpy as np
@@ -245,3 +246,106 @@ def test_every_catalog_urdf_is_a_valid_upload(tmp_path: Path, registry: Registry
         np.testing.assert_array_equal(
             frame_pose(robot, builtin.ee_frame, q), frame_pose(builtin, builtin.ee_frame, q)
         )
+
+
+# ------------------------------------------------------------------ builds and failures
+#: Generous bound on waits that succeed at once when the code is right (no timing budget).
+WAIT_S = 60.0
+
+
+def _blocking(build, started: threading.Event, release: threading.Event):
+    """``build`` that first says it started, then waits for ``release``."""
+
+    def slow(*args, **kwargs):
+        started.set()
+        assert release.wait(WAIT_S), "the test never released the slow build"
+        return build(*args, **kwargs)
+
+    return slow
+
+
+def _get_in_thread(reg: Registry, rid: str, out: dict) -> threading.Thread:
+    def run() -> None:
+        try:
+            out[rid] = reg.get(rid)
+        except BaseException as exc:  # noqa: BLE001 - reported by the test
+            out[rid] = exc
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    return thread
+
+
+@pytest.mark.parametrize("kind", ["stored", "builtin"])
+def test_a_slow_build_does_not_block_other_robots(
+    tmp_path: Path, kind: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Robot A's build waits on an event; robot B is served meanwhile (before: one global
+    lock held across every build, so B waited for A). A second get of A waits for the one
+    build of A."""
+    Registry(tmp_path).import_dh(DHTable.from_dict(SMALL))
+    Registry(tmp_path).import_dh(DHTable.from_dict({**SMALL, "name": "other"}))
+    reg = Registry(tmp_path)
+    started, release = threading.Event(), threading.Event()
+    builds: list[str] = []
+    if kind == "stored":
+        slow_id, quick_id = "small", "other"
+        real = reg._build_stored
+
+        def build_stored(stored):
+            builds.append(stored.id)
+            if stored.id == slow_id:
+                return _blocking(real, started, release)(stored)
+            return real(stored)
+
+        monkeypatch.setattr(reg, "_build_stored", build_stored)
+    else:
+        slow_id, quick_id = "planar2", "panda"
+        entry = reg.dh_builtin[slow_id]
+
+        class SlowEntry:
+            def build(self) -> RobotModel:
+                builds.append(slow_id)
+                return _blocking(entry.build, started, release)()
+
+        reg.dh_builtin = {**reg.dh_builtin, slow_id: SlowEntry()}
+    out: dict = {}
+    first = _get_in_thread(reg, slow_id, out)
+    assert started.wait(WAIT_S)
+    second_out: dict = {}
+    second = _get_in_thread(reg, slow_id, second_out)
+    quick = _get_in_thread(reg, quick_id, out)
+    quick.join(WAIT_S)
+    try:
+        assert not quick.is_alive(), f"{quick_id} waited for the build of {slow_id}"
+        assert isinstance(out[quick_id], RobotModel)
+        assert slow_id not in out and slow_id not in second_out
+    finally:
+        release.set()
+    first.join(WAIT_S)
+    second.join(WAIT_S)
+    assert out[slow_id] is second_out[slow_id]
+    assert builds.count(slow_id) == 1
+
+
+def test_a_bug_while_loading_a_stored_robot_is_not_a_conflict(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A TypeError/KeyError/IndexError is a bug in the loading code: it propagates (the
+    HTTP guard answers 500 with its traceback) instead of a 409 "delete it and add it
+    again". A record that no longer reads (bytes that are not UTF-8) stays a 409."""
+    Registry(tmp_path).import_dh(DHTable.from_dict(SMALL))
+    for bug in (TypeError("bug"), KeyError("bug"), IndexError("bug")):
+        reg = Registry(tmp_path)
+
+        def broken(*args, exc=bug, **kwargs):
+            raise exc
+
+        monkeypatch.setattr("app.robots.registry.check_stored_meshes", broken)
+        with pytest.raises(type(bug)):
+            reg.get("small")
+    monkeypatch.undo()
+    (tmp_path / "robots" / "small" / "robot.urdf").write_bytes(b"<robot name='r'>\xed</robot>")
+    with pytest.raises(ConflictError) as err:
+        Registry(tmp_path).get("small")
+    assert err.value.field == "robot_id" and "delete it and add it again" in err.value.message

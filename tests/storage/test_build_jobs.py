@@ -271,3 +271,21 @@ def test_store_roundtrip(tmp_path, planar):
         store.get(ROBOT, "../../etc/passwd")
     assert e.value.field == "map_id"
     assert not list(tmp_path.rglob(".tmp-*"))
+
+
+def test_a_failed_build_is_logged_with_its_traceback(tmp_path, planar, monkeypatch, caplog):
+    """The job reports the failure and the log carries the traceback (before: the job's
+    error string only, nothing in the log to find the bug by)."""
+
+    def broken_build(*args, **kwargs):
+        raise ZeroDivisionError("a bug in the build")
+
+    monkeypatch.setattr("app.storage.build_jobs.build_map", broken_build)
+    jobs = BuildJobs(MapStore(tmp_path), processes=1)
+    with caplog.at_level("ERROR", logger="denavit.reachability"):
+        job = wait_for(jobs, jobs.submit(planar, planar_map_spec(planar)).job_id)
+    assert job.status == "failed" and "ZeroDivisionError" in job.to_json()["error"]
+    [record] = [r for r in caplog.records if r.exc_info is not None]
+    assert job.job_id in record.getMessage()
+    assert record.exc_info[0] is ZeroDivisionError
+    assert "broken_build" in caplog.text  # the traceback's frame

@@ -37,8 +37,10 @@ Reasons, in the order they are tested
     part of the descent).
 ``singular``
     The best iterate's task Jacobian (task rows, weighted, the moving joints' columns) has a
-    smallest singular value σ_min < :data:`SINGULAR_SIGMA` (m or rad per rad or m) and the
-    search stalled there (every attempt ended without converging).
+    smallest singular value σ_min < :data:`SINGULAR_SIGMA` and the search stalled there
+    (every attempt ended without converging). σ_min is that of the dimensionless Jacobian
+    (:func:`app.kinematics.ik.scale.dimensionless`: lengths in units of the chain's length),
+    so an arm and its copy at any scale get the same verdict.
 ``timeout``
     Otherwise: the budget ended the search; ``detail`` says which (``timeout_ms`` or
     ``max_iterations``) with the counts and the best errors.
@@ -53,6 +55,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pinocchio as pin
 
+from app.kinematics.ik.scale import dimensionless, length_scale
 from app.kinematics.joint_types import PRISMATIC_MODELS, REVOLUTE_MODELS
 from app.kinematics.models import MAX_JOINT_VALUE
 
@@ -62,7 +65,8 @@ if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
     from app.kinematics.models import RobotModel
 
-#: σ_min of the best iterate's task Jacobian below this: ``singular`` (m/rad or rad/rad).
+#: σ_min of the best iterate's dimensionless task Jacobian below this: ``singular`` (rad per
+#: rad; lengths in units of the chain length, :mod:`app.kinematics.ik.scale`).
 SINGULAR_SIGMA = 1e-3
 #: A joint pinned at a limit counts when its gradient component is at least this share of
 #: the largest component.
@@ -268,7 +272,9 @@ def classify(
             f"the best configuration is pinned at a joint limit with the error decreasing "
             f"outwards ({pinned}); {errors}"
         )
-    sv = np.linalg.svd(Je, compute_uv=False)
+    prismatic = np.array([s.robot.joints[int(i)].type == "prismatic" for i in s.ch.active])
+    length = length_scale(s.robot, s.ch.frame_id)
+    sv = np.linalg.svd(dimensionless(Je, s.rows, prismatic, length), compute_uv=False)
     smin = float(sv[-1]) if sv.size else 0.0
     if smin < SINGULAR_SIGMA:
         return "singular", (

@@ -53,14 +53,18 @@ class SolverParameters:
         An iteration makes progress when ‖e‖² < progress·(best ‖e‖² of the attempt):
         0.81 = 0.9², i.e. ‖e‖ decreased by 10 %.
     rot_weight
-        Weight c of the rotation distance ‖R − R_t‖²_F (dimensionless) against the position
-        distance ‖p − p_t‖² (m²) in the ranking of table samples by pose distance to a target.
+        Weight c (m²) of the rotation distance ‖R − R_t‖²_F (dimensionless) against the
+        position distance ‖p − p_t‖² (m²) in the ranking of table samples by pose distance to
+        a target, for chains 0.4–2.5 m long; scaled with the chain's length outside
+        (:func:`app.kinematics.ik.scale.rotation_weight`, :attr:`IKChain.rot_weight`).
     rng_seed
         Seed of the per-chain table of restart configurations.
     table
         Size of that table (configurations uniform within the limits, with their FK poses).
     distinct
-        Two solutions are distinct when some joint differs by more than this (rad or m).
+        Two solutions are distinct when some revolute joint differs by more than this (rad),
+        or some prismatic joint by more than this times the chain's length (m; 1 mm on a 1 m
+        chain: :func:`app.kinematics.ik.scale.joint_units`, :attr:`IKChain.distinct`).
     nearest
         Restarts taken from the table samples nearest the target before random jumps.
     nearest_ratio

@@ -27,6 +27,7 @@ from app.kinematics.ik import kernel
 from app.kinematics.ik.boundary import ChainConstants, SearchConstants, step_parameters
 from app.kinematics.ik.kernel import CompiledChain
 from app.kinematics.ik.parameters import DEFAULT_PARAMETERS, SolverParameters
+from app.kinematics.ik.scale import joint_units, length_scale, rotation_weight
 from app.kinematics.jit import available
 from app.kinematics.lazy import LazyKey
 from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
@@ -122,6 +123,20 @@ class IKChain:
         return self
 
     @cached_property
+    def rot_weight(self) -> float:
+        """The restart ranking's rotation weight c (m²) for this chain's length
+        (:func:`app.kinematics.ik.scale.rotation_weight` of ``parameters.rot_weight``)."""
+        return rotation_weight(self._robot, self.frame_id, self.parameters.rot_weight)
+
+    @cached_property
+    def distinct(self) -> np.ndarray:
+        """Per wire joint, the largest difference (rad, or m for a prismatic joint: scaled by
+        the chain's length) at which two solutions are the same one."""
+        return self.parameters.distinct * joint_units(
+            self._robot, length_scale(self._robot, self.frame_id)
+        )
+
+    @cached_property
     def poses(self) -> SamplePoses:
         """The restart table's poses (:class:`SamplePoses`; one FK per sample)."""
         return table_poses(self._robot, self)
@@ -152,7 +167,7 @@ class IKChain:
         M, W2, _ = self.poses
         tab32 = np.ascontiguousarray(np.vstack((M.T, W2[None])), dtype=np.float32)
         return SearchConstants(
-            chain, step_parameters(p), float(p.nearest_ratio), float(p.rot_weight),
+            chain, step_parameters(p), float(p.nearest_ratio), float(self.rot_weight),
             bool(redundant and p.null_gain > 0.0), bool(p.clamp and redundant),
             bool(p.nearest_first), tab32, self.restart_table,
         )  # fmt: skip
@@ -187,7 +202,7 @@ class IKChain:
     def sample_distances_argmin(self, target: pin.SE3) -> tuple[np.ndarray, float, int]:
         """:meth:`sample_distances` and the index of the nearest sample."""
         M, W2, MT = self.poses
-        rot_weight = self.parameters.rot_weight
+        rot_weight = self.rot_weight
         pt = target.translation
         x = np.concatenate((pt, target.rotation.ravel())).astype(np.float32)
         k_t = float(pt @ pt) + 3.0 * rot_weight
@@ -208,7 +223,7 @@ def table_poses(robot: RobotModel, ch: IKChain) -> SamplePoses:
     K_t = ‖p_t‖² + 3c, using ‖R − R_t‖²_F = 6 − 2 vec(R)·vec(R_t) (c: ``rot_weight``). One
     FK per sample (4096 by default, tens of ms: :func:`ik_chain` runs it off any query).
     """
-    rot_weight = ch.parameters.rot_weight
+    rot_weight = ch.rot_weight
     model, data = robot.model, robot.model.createData()
     q = ch.mid_range.copy()
     W = np.empty((ch.restart_table.shape[0], 12))

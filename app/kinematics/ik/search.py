@@ -209,7 +209,7 @@ class Search:
         if not (math.isfinite(ep_full) and math.isfinite(er_full)):
             return False  # a pose that overflows float64 (even on unchecked components)
         for s in self.solutions:
-            if joint_distance(robot, s.q, q).max() <= self.parameters.distinct:
+            if (joint_distance(robot, s.q, q) <= self.ch.distinct).all():
                 return False
         if self.accept is not None and not self.accept(q):
             self.rejected += 1
@@ -270,7 +270,7 @@ class Search:
         d, k_t, i = self.ch.sample_distances_argmin(self.target)
         self.distances, self.nearest_one = d, i
         p = self.parameters
-        d_seed = ep2 + (2.0 * p.rot_weight) * (3.0 - trace)
+        d_seed = ep2 + (2.0 * self.ch.rot_weight) * (3.0 - trace)
         return d[i] + k_t < p.nearest_ratio * d_seed
 
     def restart(self) -> np.ndarray:

@@ -11,7 +11,8 @@
 - ``branch``: the only solutions within the joint step are on another branch;
 - ``joint_step``: every solution found moves some joint more than ``max_joint_step``;
 - ``singular``: instead of ``joint_step`` or ``branch`` when the smallest singular value of
-  the frame Jacobian (task rows, moving joints) at the last point reached (for ``branch``:
+  the dimensionless frame Jacobian (task rows, moving joints, lengths in units of the
+  chain's length) at the last point reached (for ``branch``:
   or half-way to the refused solution, where the flags change sign) is below
   :data:`SINGULAR_SIGMA`: the continuation needs unbounded joint speed there;
 - ``joint_limits``: every solution found jumps, and the linearised step from the last point
@@ -33,6 +34,7 @@ import pinocchio as pin
 from app.kinematics.fk import frame_pose
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
+from app.kinematics.ik.scale import dimensionless, length_scale
 from app.kinematics.ik.search import IKResult, joint_distance
 from app.kinematics.jacobian import frame_jacobian_by_id
 from app.kinematics.models import RobotModel
@@ -40,8 +42,9 @@ from app.kinematics.models import RobotModel
 if TYPE_CHECKING:
     from app.kinematics.paths.follow import PathPoint
 
-#: Smallest singular value of the task Jacobian (m/rad for position rows, 1 for rotation
-#: rows) below which a point is called singular.
+#: Smallest singular value of the dimensionless task Jacobian below which a point is called
+#: singular: position rows in chain lengths per rad (per chain length for a prismatic
+#: joint), rotation rows in rad per rad (:func:`app.kinematics.ik.scale.dimensionless`).
 SINGULAR_SIGMA = 0.02
 
 
@@ -148,9 +151,12 @@ class Guard:
 
 
 def smallest_singular_value(robot: RobotModel, chain: IKChain, task: Task, q: np.ndarray) -> float:
-    """σ_min of the frame Jacobian at ``q`` (world-aligned), task rows, moving joints."""
+    """σ_min of the frame Jacobian at ``q`` (world-aligned), task rows, moving joints, made
+    dimensionless by the chain's length (:func:`app.kinematics.ik.scale.dimensionless`)."""
     J = frame_jacobian_by_id(robot, robot.to_pin(q), chain.frame_id, pin.LOCAL_WORLD_ALIGNED)
     J = J[task.rows][:, chain.active]
+    prismatic = np.array([robot.joints[int(i)].type == "prismatic" for i in chain.active])
+    J = dimensionless(J, task.rows, prismatic, length_scale(robot, chain.frame_id))
     return float(np.linalg.svd(J, compute_uv=False).min())
 
 

@@ -23,6 +23,8 @@ class Viewer {
     this.q = [];
     this.panels = [];
     this.ready = false;
+    this.choice = 0; // which load() is the latest choice: only it may render
+    this.loading = 0; // load() calls not yet settled (the latest or an abandoned one)
   }
 
   path(suffix = '') { return robotPath(this.detail.id, suffix); }
@@ -53,13 +55,34 @@ class Viewer {
     await this.load(wanted);
   }
 
+  // Show robot `robotId`. Loads may finish out of order (a large robot chosen first, a
+  // small one next): only the latest choice renders; an older load that finishes later is
+  // dropped, its errors too.
   async load(robotId) {
+    this.choice += 1;
+    const choice = this.choice;
+    const latest = () => choice === this.choice;
+    this.loading += 1;
     this.ready = false;
     this.report(null);
-    const [detail, urdf] = await Promise.all([
-      api.get(robotPath(robotId)), api.get(robotPath(robotId, '/urdf')),
-    ]);
-    const view = await RobotView.load(detail, urdf);
+    let view;
+    try {
+      const [detail, urdf] = await Promise.all([
+        api.get(robotPath(robotId)), api.get(robotPath(robotId, '/urdf')),
+      ]);
+      if (!latest()) return;
+      view = await RobotView.load(detail, urdf);
+      if (!latest()) {
+        view.dispose();
+        return;
+      }
+    } catch (err) {
+      if (latest()) throw err;
+      return;
+    } finally {
+      this.loading -= 1;
+    }
+    const { detail } = view;
     if (this.robot) this.robot.dispose();
     this.robot = view;
     this.detail = detail;
@@ -96,7 +119,7 @@ viewer.panels.push(...Object.values(panels));
 window.denavit = {
   viewer,
   panels,
-  idle: () => viewer.ready && Latest.pending === 0,
+  idle: () => viewer.ready && viewer.loading === 0 && Latest.pending === 0,
 };
 
 viewer.start().catch((err) => {
