@@ -281,3 +281,32 @@ def test_the_import_reader_sees_what_these_rules_look_for(tmp_path: Path) -> Non
         "app.robots.registry",
     } <= found
     assert "tests.api.test_fk" in found
+
+
+#: Value sets only the wire has (discriminators of the request shapes, answer kinds).
+WIRE_ONLY_LITERALS = {
+    ("paths.py", '"line"'),
+    ("paths.py", '"arc"'),
+    ("collisions.py", '"self", "environment"'),
+    ("velocity.py", '"forward", "inverse"'),
+}
+
+
+@pytest.mark.parametrize("path", _modules("app/api/schemas"), ids=_rel)
+def test_wire_value_sets_come_from_their_definitions(path: Path) -> None:
+    """A value set the core (or the storage) defines is imported, not spelled again in a
+    ``Literal[...]`` of string constants."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    spelled = []
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Subscript)
+            and isinstance(node.value, ast.Name)
+            and node.value.id == "Literal"
+        ):
+            values = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
+            if values and all(isinstance(v, ast.Constant) for v in values):
+                text = ", ".join(ast.unparse(v) for v in values).replace("'", '"')
+                if (path.name, text) not in WIRE_ONLY_LITERALS:
+                    spelled.append(text)
+    assert not spelled, f"{_rel(path)} spells value sets {spelled}: import them"

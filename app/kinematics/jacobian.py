@@ -20,6 +20,9 @@ import pinocchio as pin
 from app.kinematics.models import RobotModel
 
 Reference = Literal["world", "local", "world_spatial"]
+#: The references a twist is given in (velocity IK): the frame origin's velocity in world
+#: axes, or in the frame's own axes.
+TWIST_REFERENCES = ("world", "local")
 
 REFERENCE_FRAMES: dict[str, pin.ReferenceFrame] = {
     "world": pin.LOCAL_WORLD_ALIGNED,

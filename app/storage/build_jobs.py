@@ -68,6 +68,10 @@ OWNER_GONE = "the worker process building it stopped"
 log = logging.getLogger("denavit.reachability")
 
 
+#: A build job's states: queued, then running, then one of the three ends.
+JOB_STATUSES = ("queued", "running", "done", "failed", "cancelled")
+
+
 @dataclass
 class BuildJob:
     """A map build running (or queued) in the background, owned by this process."""
@@ -76,7 +80,7 @@ class BuildJob:
     robot_id: str
     spec: MapSpec
     progress: Progress
-    status: str = "queued"  # queued | running | done | failed | cancelled
+    status: str = "queued"  # one of JOB_STATUSES
     created_at: float = field(default_factory=time.time)
     finished_at: float | None = None
     map_id: str | None = None

@@ -10,6 +10,7 @@ from pydantic import BaseModel, Field
 from app.api.schemas.common import Finite, Matrix4, Position3, Quat, Schema, group_field
 from app.api.schemas.scenes import ObstacleIn
 from app.kinematics.collision import GEOMETRY_MODES
+from app.kinematics.ik.failure import REASONS
 from app.kinematics.ik.problem import (
     DEFAULT_TIMEOUT_MS,
     DEFAULT_TOLERANCE,
@@ -21,7 +22,7 @@ from app.kinematics.ik.problem import (
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
 
-Reason = Literal["unreachable", "joint_limits", "collision", "singular", "timeout"]
+Reason = Literal[REASONS]
 
 REASON_DOC = (
     "Why no solution was found (null on success): unreachable (the target position is "

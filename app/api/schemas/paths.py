@@ -9,11 +9,10 @@ from pydantic import BaseModel, Field
 from app.api.schemas.common import Finite, Schema
 from app.api.schemas.ik import IKTaskIn, Positive, Target
 from app.api.schemas.timing import TimingIn, TimingOut
+from app.kinematics.paths.failures import PATH_REASONS
 
 #: Why a path stops (the first point that cannot be reached).
-FailureReason = Literal[
-    "unreachable", "joint_limits", "collision", "singular", "timeout", "joint_step", "branch"
-]
+FailureReason = Literal[PATH_REASONS]
 
 
 class MaxStep(Schema):

@@ -11,7 +11,13 @@ from pydantic import BaseModel, Field
 
 from app.api.schemas.common import Finite, Quat, Schema, Vec3
 from app.kinematics.analysis import Part
-from app.kinematics.reachability.spec import MAX_ORIENTATION_DIVISIONS, MAX_SAMPLES
+from app.kinematics.reachability.spec import (
+    MAX_ORIENTATION_DIVISIONS,
+    MAX_SAMPLES,
+    SAMPLINGS,
+    SELF_COLLISION_MODES,
+)
+from app.storage.build_jobs import JOB_STATUSES
 
 JobId = Annotated[str, PathParam(description="Build job id.", max_length=64)]
 MapId = Annotated[
@@ -52,13 +58,13 @@ class BuildRequest(Schema):
     samples: int = Field(
         200_000, ge=1, le=MAX_SAMPLES, description="Joint-space samples (grid: rounded)."
     )
-    sampling: Literal["random", "grid"] = Field(
+    sampling: Literal[SAMPLINGS] = Field(
         "random",
         description="random: uniform within joint limits | grid: g = round(samples^(1/k)) "
         "values per joint.",
     )
     seed: int = Field(0, ge=0, le=2**63 - 1, description="Seed of the random samples.")
-    self_collision: Literal["ignore", "mesh", "convex"] = Field(
+    self_collision: Literal[SELF_COLLISION_MODES] = Field(
         "ignore",
         description="Drop self-colliding samples using the collision module's geometry "
         "(mesh or convex hulls); one collision query per sample, far slower.",
@@ -82,7 +88,7 @@ class JobResponse(BaseModel):
     job_id: str
     robot_id: str
     frame: str
-    status: Literal["queued", "running", "done", "failed", "cancelled"]
+    status: Literal[JOB_STATUSES]
     map_id: str | None = Field(description="The stored map, once done.")
     error: str | None
     progress: ProgressOut

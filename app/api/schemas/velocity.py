@@ -9,6 +9,7 @@ from pydantic import BaseModel, Field
 
 from app.api.schemas.common import ConfigurationIn, Finite
 from app.kinematics.ik.problem import Mode
+from app.kinematics.jacobian import TWIST_REFERENCES
 from app.kinematics.velocity import MAX_DAMPING, MAX_RATE, SINGULAR_THRESHOLD
 
 #: A rate (rad/s, m/s) within ±MAX_RATE.
@@ -24,7 +25,7 @@ class VelocityRequest(ConfigurationIn):
     frame: str | None = Field(
         None, description="Frame; default the end effector (with `group`: the group's tip)."
     )
-    reference: Literal["world", "local"] = Field(
+    reference: Literal[TWIST_REFERENCES] = Field(
         "world",
         description="Axes of the twist: world (origin velocity and angular velocity in world "
         "axes, Pinocchio LOCAL_WORLD_ALIGNED) | local (the frame's own axes, LOCAL).",

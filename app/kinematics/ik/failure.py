@@ -65,6 +65,10 @@ if TYPE_CHECKING:
     from app.kinematics.ik.search import Search
     from app.kinematics.models import RobotModel
 
+
+#: Why an IK query failed (``IKResult.reason``), in the order the checks run.
+REASONS = ("unreachable", "joint_limits", "collision", "singular", "timeout")
+
 #: σ_min of the best iterate's dimensionless task Jacobian below this: ``singular`` (rad per
 #: rad; lengths in units of the chain length, :mod:`app.kinematics.ik.scale`).
 SINGULAR_SIGMA = 1e-3

@@ -32,6 +32,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.fk import frame_pose
+from app.kinematics.ik.failure import REASONS
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
 from app.kinematics.ik.scale import dimensionless, length_scale
@@ -45,6 +46,9 @@ if TYPE_CHECKING:
 #: Smallest singular value of the dimensionless task Jacobian below which a point is called
 #: singular: position rows in chain lengths per rad (per chain length for a prismatic
 #: joint), rotation rows in rad per rad (:func:`app.kinematics.ik.scale.dimensionless`).
+#: Why a path stops (the first point that cannot be reached): an IK query's reasons and
+#: the path's own guards.
+PATH_REASONS = (*REASONS, "joint_step", "branch")
 SINGULAR_SIGMA = 0.02
 
 

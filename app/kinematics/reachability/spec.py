@@ -81,6 +81,12 @@ class MapSpec:
         return [lo + n * self.voxel_size for lo, n in zip(self.lower, self.shape, strict=True)]
 
 
+#: How joint space is sampled: uniform random samples or a grid.
+SAMPLINGS = ("random", "grid")
+#: Self-collision filtering of samples: none, or the collision geometry of that mode.
+SELF_COLLISION_MODES = ("ignore", "mesh", "convex")
+
+
 def default_bounds(robot: RobotModel, frame: str) -> tuple[np.ndarray, np.ndarray]:
     """A box that contains every position of ``frame`` (module doc), in the root frame."""
     model = robot.model
@@ -136,9 +142,9 @@ def make_spec(
         raise InvalidInputError(f"must be 0 … {MAX_ORIENTATION_DIVISIONS}", "orientation_divisions")
     if not 1 <= samples <= MAX_SAMPLES:
         raise InvalidInputError(f"must be 1 … {MAX_SAMPLES}", "samples")
-    if sampling not in ("random", "grid"):
+    if sampling not in SAMPLINGS:
         raise InvalidInputError("must be random or grid", "sampling")
-    if self_collision not in ("ignore", "mesh", "convex"):
+    if self_collision not in SELF_COLLISION_MODES:
         raise InvalidInputError("must be ignore, mesh or convex", "self_collision")
     if self_collision != "ignore" and self_collision_check() is None:
         raise InvalidInputError(
