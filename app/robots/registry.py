@@ -5,11 +5,10 @@ model is built on first use and cached. Sources:
 
 - ``example-robot-data`` and ``dh`` (built in): the catalog and DH tables of
   :mod:`app.robots.catalog`.
-- ``dh``, ``upload`` and ``package`` (user-added): robots imported from a DH table,
-  uploaded as URDF text, or uploaded as a description package (an archive with meshes,
-  whose files are stored with the robot under ``files/``), checked by
-  :mod:`app.robots.documents` and kept in the data directory by
-  :class:`app.storage.store.RobotStore`.
+- ``dh``, ``upload`` and ``package`` (user-added): robots imported from a DH table, uploaded
+  as URDF text, or as a description package (an archive with meshes, whose files are stored
+  with the robot under ``files/``), checked by :mod:`app.robots.documents` and kept in the
+  data directory by :class:`app.storage.store.RobotStore`.
 
 Several processes may serve the same data directory: the directory is the source of truth.
 Before a cached user-added robot is served, :meth:`RobotStore.token` (one ``stat`` and one
@@ -24,7 +23,7 @@ import logging
 import threading
 from collections.abc import Mapping
 from pathlib import Path
-from typing import BinaryIO
+from typing import Any, BinaryIO
 
 import yaml
 
@@ -381,17 +380,7 @@ class Registry:
         dirs = robot.package_dirs
         triangles = check_meshes(urdf, meshes, dirs, limits.mesh, limits.parse, "urdf")
         robot.mesh_limits = self.limits.mesh
-        meta = {
-            "name": robot_id,
-            "source": "upload",
-            "description": description,
-            "ee_frame": robot.ee_frame,
-            "joints": robot.n,
-            CHECKED_KEY: triangles,
-        }
-        files = {URDF_FILE: urdf.encode()}
-        if srdf is not None:
-            files[SRDF_FILE] = srdf.encode()
+        meta, files = _record(robot, "upload", description, triangles, urdf, srdf)
         return self._stored(store.create(robot_id, meta, files), robot)
 
     def add_package(
@@ -451,17 +440,9 @@ class Registry:
             )
             robot.package_dirs = [str(store.root / robot_id), str(erd_share_dir())]
             robot.mesh_limits = self.limits.mesh
-            meta = {
-                "name": robot_id,
-                "source": "package",
-                "description": description,
-                "ee_frame": robot.ee_frame,
-                "joints": robot.n,
-                CHECKED_KEY: triangles,
-            }
-            files = {URDF_FILE: package.urdf.encode()}
-            if package.srdf is not None:
-                files[SRDF_FILE] = package.srdf.encode()
+            meta, files = _record(
+                robot, "package", description, triangles, package.urdf, package.srdf
+            )
             stored = store.create(robot_id, meta, files, tree=files_dir)
         return self._stored(stored, robot)
 
@@ -497,3 +478,23 @@ class Registry:
         self.store.delete(robot_id)
         with self._lock:
             self._user_models = {k: v for k, v in self._user_models.items() if k != robot_id}
+
+
+def _record(
+    robot: RobotModel,
+    source: str,
+    description: str,
+    triangles: Any,
+    urdf: str,
+    srdf: str | None,
+) -> tuple[dict[str, Any], dict[str, bytes]]:
+    """A checked, user-added robot as stored: metadata (mesh triangle counts) and documents."""
+    files = {URDF_FILE: urdf} | ({} if srdf is None else {SRDF_FILE: srdf})
+    return {
+        "name": robot.id,
+        "source": source,
+        "description": description,
+        "ee_frame": robot.ee_frame,
+        "joints": robot.n,
+        CHECKED_KEY: triangles,
+    }, {name: text.encode() for name, text in files.items()}

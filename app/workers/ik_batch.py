@@ -10,16 +10,11 @@ from (URDF text, package directories, SRDF, end effector; cached per robot id an
 of those, so a replaced robot is rebuilt) and solve chunks of consecutive targets; the
 results are assembled in target order.
 
-Determinism: an answer never depends on the number of processes or on the chunking. Each
-target is solved from the same seed with the same options, and with a ``random_seed`` each
-target has a generator of its own, ``default_rng(SeedSequence(random_seed,
-spawn_key=(index,)))`` (the ``index``-th child of ``SeedSequence(random_seed).spawn``), in
-this thread and in a worker alike. Without ``random_seed`` the restarts come from the
-chain's fixed table, as for a single IK. Only the time budget (``timeout_ms``) can make two
-runs differ, on a loaded machine; ``max_iterations`` with a generous budget does not.
-
-Collision-aware batches run in the pool too: obstacles are plain data, and each worker
-builds (and caches, per robot) its own collision model.
+Determinism: a worker solves its chunk with :func:`~app.kinematics.ik.batch.solve_targets`,
+target ``i`` with the generator of its index in the batch, so an answer never depends on the
+number of processes or on the chunking (:mod:`app.kinematics.ik.batch`). Collision-aware
+batches run in the pool too: obstacles are plain data, and each worker builds (and caches,
+per robot) its own collision model.
 
 Cancellation: the caller's ``cancel`` event is checked while waiting for each chunk; once
 set, chunks not yet started are withdrawn and :class:`~app.kinematics.errors.Cancelled` is

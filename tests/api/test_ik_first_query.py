@@ -8,6 +8,7 @@ import asyncio
 import threading
 
 import numpy as np
+import pytest
 
 from app.kinematics.fk import forward_kinematics
 from app.kinematics.ik import precompute
@@ -28,7 +29,9 @@ def _target(registry) -> dict:
     return {"position": T[:3, 3].tolist(), "orientation": matrix_to_quaternion(T[:3, :3]).tolist()}
 
 
-def test_restart_table_is_built_off_the_event_loop(client, registry, monkeypatch) -> None:
+@pytest.fixture
+def table_builds(monkeypatch) -> list[bool]:
+    """One entry per restart-table build: whether it ran on an event loop."""
     calls: list[bool] = []
     real = precompute.table_poses
 
@@ -37,6 +40,11 @@ def test_restart_table_is_built_off_the_event_loop(client, registry, monkeypatch
         return real(robot, ch)
 
     monkeypatch.setattr(precompute, "table_poses", spy)
+    return calls
+
+
+def test_restart_table_is_built_off_the_event_loop(client, registry, table_builds) -> None:
+    calls = table_builds
     body = {"target": _target(registry), "frame": "panda_link8"}  # default budget: inline
     # (success is not asserted: a 5 ms budget on a loaded machine may run out; where the
     # table is built is what matters)
@@ -80,17 +88,10 @@ def test_health_answers_while_the_table_is_built(client, registry, monkeypatch) 
 
 
 def test_the_stream_builds_the_restart_table_off_the_event_loop(
-    client, registry, monkeypatch
+    client, registry, table_builds
 ) -> None:
     """The stream's first IK message of a robot and frame is the same first query."""
-    calls: list[bool] = []
-    real = precompute.table_poses
-
-    def spy(robot, ch):
-        calls.append(_on_event_loop())
-        return real(robot, ch)
-
-    monkeypatch.setattr(precompute, "table_poses", spy)
+    calls = table_builds
     message = {"id": 1, "op": "ik", "target": _target(registry), "frame": "panda_link8"}
     with client.websocket_connect("/robots/panda/stream") as ws:
         ws.send_json(message)
