@@ -287,8 +287,6 @@ def test_the_import_reader_sees_what_these_rules_look_for(tmp_path: Path) -> Non
 WIRE_ONLY_LITERALS = {
     ("paths.py", '"line"'),
     ("paths.py", '"arc"'),
-    ("collisions.py", '"self", "environment"'),
-    ("velocity.py", '"forward", "inverse"'),
 }
 
 

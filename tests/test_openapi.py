@@ -166,9 +166,9 @@ def test_response_poses_have_the_request_array_lengths(client) -> None:
     schema = client.get("/openapi.json").json()
     components = schema["components"]["schemas"]
     expected = {  # the request side: IK targets and DH fixed transforms
-        "position": _array_shape(components["Target"]["properties"]["position"], schema),
-        "orientation": _array_shape(components["Target"]["properties"]["orientation"], schema),
-        "matrix": _array_shape(components["Target"]["properties"]["matrix"], schema),
+        "position": _array_shape(components["Pose"]["properties"]["position"], schema),
+        "orientation": _array_shape(components["Pose"]["properties"]["orientation"], schema),
+        "matrix": _array_shape(components["Pose"]["properties"]["matrix"], schema),
         "rpy": _array_shape(components["DHTransformDoc"]["properties"]["rpy"], schema),
     }
     assert expected == {

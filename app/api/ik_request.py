@@ -13,7 +13,8 @@ import pinocchio as pin
 from starlette.requests import HTTPConnection
 
 from app.api.obstacles import resolve_obstacles
-from app.api.schemas.ik import IKTaskIn, Target
+from app.api.schemas.ik import IKTaskIn
+from app.api.schemas.poses import Pose
 from app.api.state import services
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import default_frame, group
@@ -23,9 +24,12 @@ from app.kinematics.ik.ranking import clearance_function
 from app.kinematics.models import RobotModel
 
 
-def target_of(target: Target, mode: str, field: str = "target") -> pin.SE3:
-    """The target's placement (validated by the core, naming ``field``)."""
-    return target_placement(target.position, target.orientation, target.matrix, mode, field)
+def target_of(target: Pose, mode: str, field: str = "target") -> pin.SE3:
+    """The target's placement (validated by the core, naming ``field``; the missing part of
+    mode position or orientation is the identity's)."""
+    return target_placement(
+        target.position, target.orientation, target.matrix, mode, field, rpy=target.rpy
+    )
 
 
 def collisions_of(conn: HTTPConnection, body: IKTaskIn) -> Collisions | None:

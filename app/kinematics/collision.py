@@ -66,6 +66,8 @@ from app.kinematics.models import RobotModel
 from app.kinematics.obstacles import Obstacle
 
 GEOMETRY_MODES = ("mesh", "convex")
+#: The kinds of a colliding or nearest pair: link–link, or link–obstacle.
+PAIR_KINDS = ("self", "environment")
 #: Combined robot + obstacle models kept per robot and geometry mode (least recently used
 #: dropped first).
 MAX_CACHED_SCENES = 32

@@ -36,6 +36,8 @@ MAX_DAMPING = 1e-1
 #: largest threshold and damping: far above any machine, and far enough below float64's
 #: range (1.8e308) that J·q̇, J⁺·t and their residuals cannot overflow to ±inf or NaN.
 MAX_RATE = 1e6
+#: The two problems: joint velocities → twist, twist → joint velocities.
+DIRECTIONS = ("forward", "inverse")
 
 
 @dataclass(slots=True)

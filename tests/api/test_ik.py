@@ -179,7 +179,7 @@ BAD = [
     ({"target": {"position": [0, 0, 0], "orientation": [0, 0, 0, 2]}}, 422, "target.orientation"),
     ({"target": {"orientation": [0, 0, 0, 1]}}, 422, "target.position"),
     ({"target": {"position": [0, 0, 0]}}, 422, "target.orientation"),
-    ({"target": {**GOOD_TARGET, "matrix": np.eye(4).tolist()}}, 422, "target"),
+    ({"target": {**GOOD_TARGET, "matrix": np.eye(4).tolist()}}, 422, "target.matrix"),
     ({"target": {"matrix": (2 * np.eye(4)).tolist()}}, 422, "target.matrix"),
     (
         {"target": {"matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]}},

@@ -434,10 +434,24 @@ def test_query_forms_agree(pc):
         {"position": p.tolist(), "orientation": q.tolist()} for p, q in zip(pts, quats, strict=True)
     ]
     fast = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": poses}).json()
-    poses[0] = {"position": pts[0].tolist(), "orientation": None}  # forces full validation
+    poses[0] = {"position": pts[0].tolist()}  # mixed keys: forces full validation
     slow = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": poses}).json()
     assert compact == fast
     assert slow["reachable"][1:] == fast["reachable"][1:]
+    # The full pose an answer gives (rpy and matrix of the same yaw, written out here)
+    full = []
+    for p, y in zip(pts.tolist(), yaw.tolist(), strict=True):
+        c, s = math.cos(y), math.sin(y)
+        matrix = [[c, -s, 0.0, p[0]], [s, c, 0.0, p[1]], [0.0, 0.0, 1.0, p[2]], [0, 0, 0, 1.0]]
+        quat = [0.0, 0.0, math.sin(y / 2), math.cos(y / 2)]
+        full.append({"position": p, "orientation": quat, "rpy": [0.0, 0.0, y], "matrix": matrix})
+    same = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": full}).json()
+    assert same == fast
+    no_rotation = [{"matrix": f["matrix"]} for f in full[:1]] + [{"position": pts[1].tolist()}]
+    r = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": no_rotation})
+    assert r.status_code == 200 and r.json()["reachable"][0] == fast["reachable"][0], r.text
+    r = pc.post(f"{BASE}/query", json={"map_id": j["map_id"], "poses": [{"rpy": [0, 0, 0]}]})
+    assert r.status_code == 422 and r.json()["field"] == "poses.0.position", r.text
     assert slow["manipulability"][1:] == fast["manipulability"][1:]
     poses = [{"position": [0, 0, 0], "orientation": [0, 0, 0, 1]}] * 2
     poses[1] = {"position": [0, 0, 0], "orientation": [0, 0, 0, 0]}

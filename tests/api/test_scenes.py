@@ -20,16 +20,30 @@ POST = {"name": "post", "shape": "cylinder", "radius": 0.05, "length": 1.0}
 SCENE = {"name": "bench-1", "description": "a table", "obstacles": [TABLE, POST]}
 
 
+def _identity_pose(position: list[float]) -> dict:
+    """The full answer pose (all four fields) of a translation ``position``."""
+    matrix = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0, 0, 0, 1.0]]
+    for i in range(3):
+        matrix[i][3] = position[i]
+    return {
+        "position": position,
+        "orientation": [0.0, 0.0, 0.0, 1.0],
+        "rpy": [0.0, 0.0, 0.0],
+        "matrix": matrix,
+    }
+
+
+#: The table as answers show it: every pose field filled.
+TABLE_OUT = {**TABLE, "pose": _identity_pose([0.5, 0.0, 0.2])}
+
+
 def test_create_get_list_delete(client) -> None:
     r = client.post("/scenes", json=SCENE)
     assert r.status_code == 201, r.text
     stored = r.json()
     assert stored["name"] == "bench-1" and stored["description"] == "a table"
-    assert stored["obstacles"][0] == TABLE
-    assert stored["obstacles"][1]["pose"] == {
-        "position": [0.0, 0.0, 0.0],
-        "orientation": [0.0, 0.0, 0.0, 1.0],
-    }
+    assert stored["obstacles"][0] == TABLE_OUT
+    assert stored["obstacles"][1]["pose"] == _identity_pose([0.0, 0.0, 0.0])
     assert client.get("/scenes/bench-1").json() == stored
     assert client.get("/scenes").json() == {
         "scenes": [{"name": "bench-1", "description": "a table", "obstacles": 2}]
@@ -53,7 +67,7 @@ def test_file_on_disk_and_persisted_across_restart(settings) -> None:
     path = settings.data_dir / "scenes" / "bench-1.json"
     assert json.loads(path.read_text())["obstacles"][0]["name"] == "table"
     with TestClient(create_app(settings)) as c:
-        assert c.get("/scenes/bench-1").json()["obstacles"][0] == TABLE
+        assert c.get("/scenes/bench-1").json()["obstacles"][0] == TABLE_OUT
         body = c.post("/robots/panda/collisions", json={"scene": "bench-1"}).json()
         assert body["environment_collision"] is True  # the post stands through the arm
         assert c.delete("/scenes/bench-1").status_code == 204

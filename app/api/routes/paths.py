@@ -17,13 +17,12 @@ from app.api.ik_request import (
     collisions_of,
     options_of,
     rng_of,
-    target_of,
 )
 from app.api.limits import check_budget, check_request_budget
 from app.api.offload import offload_cancellable
 from app.api.responses import ORJSONResponse
-from app.api.schemas.ik import Target
 from app.api.schemas.paths import ArcSegment, PathRequest, PathResponse
+from app.api.schemas.poses import Pose
 from app.api.schemas.timing import TimingIn, timing_of
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group, group
@@ -37,15 +36,15 @@ from app.operations.metrics import record_ik
 router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
 
 
-def _pose(target: Target, mode: str, previous: pin.SE3, field: str) -> pin.SE3:
+def _pose(target: Pose, mode: str, previous: pin.SE3, field: str) -> pin.SE3:
     """A path pose: the target, its missing orientation (mode ``position``) or position (mode
     ``orientation``) taken from the previous pose of the path."""
-    T = target_of(target, mode, field)
-    if target.matrix is None and target.orientation is None:
-        T = pin.SE3(previous.rotation, T.translation)
-    if target.matrix is None and target.position is None:
-        T = pin.SE3(T.rotation, previous.translation)
-    return T
+    return target.placement(
+        field,
+        need_position=mode != "orientation",
+        need_rotation=mode != "position",
+        need=f"for mode {mode!r}",
+    ).se3(previous)
 
 
 def _path(body: PathRequest, start: pin.SE3) -> CartesianPath:

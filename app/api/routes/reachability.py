@@ -207,15 +207,13 @@ def _query_arrays(raw: bytes, limit: int) -> tuple[str, np.ndarray, np.ndarray |
         return _check_query(body.map_id, rows["poses.position"], quat, "poses", limit)
     if body.poses is not None:
         n = len(body.poses)
-        pos = np.array([p.position for p in body.poses], dtype=float).reshape(n, 3)
-        quat = np.full((n, 4), np.nan)
+        pos = np.empty((n, 3))
+        quat = np.full((n, 4), np.nan)  # NaN row: any orientation
         for i, p in enumerate(body.poses):
-            if p.orientation is not None:
-                quat[i] = p.orientation
-        given = ~np.isnan(quat[:, 0])
-        if given.any():
-            rows_given = np.flatnonzero(given)
-            quat[given] = unit_quaternions(quat[given], "poses.{}.orientation", rows_given)
+            pl = p.placement(f"poses.{i}", need_position=True, need="for a reachability query")
+            pos[i] = pl.translation
+            if pl.quaternion is not None:
+                quat[i] = pl.quaternion
         return _check_query(body.map_id, pos, quat, "poses", limit)
     pos = np.asarray(rows["positions"], dtype=float).reshape(-1, 3)
     quat = rows.get("orientations")

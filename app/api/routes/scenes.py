@@ -7,14 +7,18 @@ A scene is a named set of obstacles, stored under ``<data_dir>/scenes/<name>.jso
 
 from __future__ import annotations
 
+from typing import Any
+
 from fastapi import APIRouter, Depends
 from starlette.responses import Response
 
 from app.api.deps import SceneStoreDep
 from app.api.errors import ERROR_RESPONSES
+from app.api.obstacles import obstacle_items, obstacle_json
 from app.api.responses import ORJSONResponse
 from app.api.schemas.scenes import SceneIn, SceneList, SceneName, SceneOut
 from app.api.security import require_token
+from app.storage.scenes import Scene
 
 router = APIRouter(prefix="/scenes", tags=["collisions"])
 
@@ -34,10 +38,10 @@ def create_scene(body: SceneIn, store: SceneStoreDep) -> ORJSONResponse:
     """Store a named set of obstacles (409 if the name is taken; persisted across restarts)."""
     scene = store.create(
         body.name,
-        [o.model_dump(exclude_none=True) for o in body.obstacles],
+        obstacle_items(body.obstacles),
         body.description,
     )
-    return ORJSONResponse(scene.to_json(), status_code=201)
+    return ORJSONResponse(_scene_json(scene), status_code=201)
 
 
 @router.get("", operation_id="list_scenes", response_model=SceneList)
@@ -61,7 +65,15 @@ def list_scenes(store: SceneStoreDep) -> ORJSONResponse:
 )
 def get_scene(name: SceneName, store: SceneStoreDep) -> ORJSONResponse:
     """A stored scene with its obstacles."""
-    return ORJSONResponse(store.get(name, field="name").to_json())
+    return ORJSONResponse(_scene_json(store.get(name, field="name")))
+
+
+def _scene_json(scene: Scene) -> dict[str, Any]:
+    """A scene's answer: its wire form with every obstacle pose filled (position,
+    orientation, rpy, matrix)."""
+    out = scene.to_json()
+    out["obstacles"] = [obstacle_json(o) for o in out["obstacles"]]
+    return out
 
 
 @router.delete(

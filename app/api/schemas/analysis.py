@@ -8,10 +8,17 @@ from typing import Annotated
 
 from pydantic import BaseModel, Field
 
-from app.api.schemas.common import ConfigurationIn, Finite, JointValue, Schema, group_field
+from app.api.schemas.common import (
+    Configuration,
+    ConfigurationIn,
+    Finite,
+    JointValue,
+    Schema,
+    group_field,
+)
 from app.api.schemas.jacobian import REFERENCE_DOC
-from app.kinematics.analysis import DEFAULT_RELATIVE_TOLERANCE, Part
-from app.kinematics.jacobian import Reference
+from app.api.schemas.values import JacobianPart, JacobianReference
+from app.kinematics.analysis import DEFAULT_RELATIVE_TOLERANCE
 
 PART_DOC = (
     "Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) | rotation "
@@ -33,9 +40,9 @@ class TaskOptions(Schema):
     frame: str | None = Field(
         None, description="Frame; default the end effector (with `group`: the group's tip)."
     )
-    part: Part | None = Field(None, description=PART_DOC)
+    part: JacobianPart | None = Field(None, description=PART_DOC)
     rows: list[Row] | None = Field(None, description=ROWS_DOC, max_length=6)
-    reference: Reference = Field("world", description=REFERENCE_DOC)
+    reference: JacobianReference = Field("world", description=REFERENCE_DOC)
     relative_tolerance: Finite = Field(
         DEFAULT_RELATIVE_TOLERANCE, ge=0.0, lt=1.0, description=TOL_DOC
     )
@@ -59,8 +66,8 @@ class ManipulabilityResponse(BaseModel):
 
     robot_id: str
     frame: str
-    reference: str
-    q: list[float]
+    reference: JacobianReference
+    q: Configuration
     rows: list[str] = Field(description="The task's Jacobian rows, in order.")
     joints: list[str] = Field(
         description="The task Jacobian's columns: the joints that move the frame."
@@ -105,7 +112,7 @@ class ManipulabilityBatchResponse(BaseModel):
 
     robot_id: str
     frame: str
-    reference: str
+    reference: JacobianReference
     rows: list[str]
     joints: list[str]
     yoshikawa: list[float]
@@ -125,7 +132,7 @@ class StaticsRequest(ConfigurationIn):
     frame: str | None = Field(
         None, description="Frame; default the end effector (with `group`: the group's tip)."
     )
-    reference: Reference = Field(
+    reference: JacobianReference = Field(
         "world",
         description="Axes of the wrench (as for the Jacobian). world: force and moment about "
         "the frame origin, world axes | local: frame axes | world_spatial: moment about the "
@@ -146,8 +153,8 @@ class StaticsResponse(BaseModel):
 
     robot_id: str
     frame: str
-    reference: str
-    q: list[float]
+    reference: JacobianReference
+    q: Configuration
     wrench: list[float] = Field(description="[fx, fy, fz, mx, my, mz] (N, N·m).")
     torques: list[float] = Field(description="Jᵀ·F in joint order (N·m, N).")
     joint_names: list[str]

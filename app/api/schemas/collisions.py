@@ -3,16 +3,22 @@ GET /robots/{robot_id}/collision_pairs (distances and witness points in m, root 
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from pydantic import BaseModel, Field, Strict
 
-from app.api.schemas.common import ConfigurationIn, JointValue, Schema, Vec3Out, group_field
+from app.api.schemas.common import (
+    Configuration,
+    ConfigurationIn,
+    JointValue,
+    Schema,
+    Vec3Out,
+    group_field,
+)
 from app.api.schemas.scenes import ObstacleIn
-from app.kinematics.collision import GEOMETRY_MODES
+from app.api.schemas.values import CollisionGeometry, CollisionPairKind
 from app.kinematics.obstacles import MAX_OBSTACLES
 
-GeometryMode = Literal[GEOMETRY_MODES]
 Margin = Annotated[float, Strict(), Field(ge=0.0, le=10.0, allow_inf_nan=False)]
 Flag = Annotated[bool, Strict()]
 
@@ -34,7 +40,7 @@ class CollisionOptions(Schema):
         description="Compute every checked pair's distance and witness points "
         "(slower, especially with meshes).",
     )
-    geometry: GeometryMode = Field(
+    geometry: CollisionGeometry = Field(
         "mesh",
         description="mesh: the URDF collision meshes (exact); convex: their convex hulls "
         "(faster, conservative, signed distances).",
@@ -50,7 +56,7 @@ class PairOut(BaseModel):
 
     a: str = Field(description="Link name.")
     b: str = Field(description="Link name (self) or obstacle name (environment).")
-    kind: Literal["self", "environment"]
+    kind: CollisionPairKind
     in_collision: bool = Field(description="Closer than the margin.")
     distance: float | None = Field(
         description="Distance (m); negative = penetration depth where coal computes it "
@@ -68,8 +74,8 @@ class CollisionResponse(BaseModel):
     """The verdict for one configuration."""
 
     robot_id: str
-    q: list[float] = Field(description="The configuration checked, in joint order.")
-    geometry: str
+    q: Configuration = Field(description="The configuration checked, in joint order.")
+    geometry: CollisionGeometry
     margin: float
     in_collision: bool = Field(description="Any pair closer than the margin.")
     self_collision: bool = Field(description="Two links of the robot collide.")
@@ -98,7 +104,7 @@ class CollisionBatchResponse(BaseModel):
     """Compact per-configuration answers: entry i for configuration i."""
 
     robot_id: str
-    geometry: str
+    geometry: CollisionGeometry
     margin: float
     count: int
     num_in_collision: int

@@ -12,6 +12,7 @@ from typing import Annotated, Any
 import numpy as np
 from fastapi import Path
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, Strict
+from typing_extensions import TypeAliasType
 
 from app.kinematics.groups import Group, configuration, group
 from app.kinematics.models import MAX_JOINT_VALUE, MAX_POSITION, RobotModel
@@ -36,6 +37,17 @@ JointValue = Annotated[Finite, Field(ge=-MAX_JOINT_VALUE, le=MAX_JOINT_VALUE)]
 #: A target coordinate (m) within ±MAX_POSITION.
 Coordinate = Annotated[Finite, Field(ge=-MAX_POSITION, le=MAX_POSITION)]
 Position3 = Annotated[list[Coordinate], Field(min_length=3, max_length=3)]
+#: Joint name → value (rad for revolute and continuous joints, m for prismatic ones): one
+#: named component (``JointPositions``) for every request and answer (configurations, IK
+#: seeds, path starts, named states). Finite numbers here; the core checks each value
+#: against ±MAX_JOINT_VALUE naming ``<field>.<joint>``
+#: (:meth:`~app.kinematics.models.RobotModel.apply_joint_map`), so a seed's union does not
+#: blur the error.
+JointPositions = TypeAliasType(
+    "JointPositions", Annotated[dict[str, Finite], Field(max_length=1024)]
+)
+#: One value per actuated joint in joint order (rad or m): the ``Configuration`` component.
+Configuration = TypeAliasType("Configuration", Annotated[list[JointValue], Field(max_length=1024)])
 
 
 def _valid_text(value: str) -> str:
@@ -74,19 +86,17 @@ def group_field() -> Any:
 class ConfigurationIn(Schema):
     """A configuration: ``q`` in joint order, or a ``joint_positions`` map (not both)."""
 
-    q: list[JointValue] | None = Field(
+    q: Configuration | None = Field(
         None,
         description="One value per actuated joint, in the order of GET /robots/{id} "
         "(rad for revolute and continuous joints, m for prismatic ones); with `group`, "
         "one per joint of the group (in the group's order) is accepted too.",
-        max_length=1024,
     )
-    joint_positions: dict[str, JointValue] | None = Field(
+    joint_positions: JointPositions | None = Field(
         None,
         description="Joint name → value (rad or m); joints not given take their neutral value. "
         "Mimic joints may be named (a ROS JointState as is): their value must equal "
         "multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).",
-        max_length=1024,
     )
 
     group: str | None = group_field()

@@ -6,6 +6,7 @@ from __future__ import annotations
 from pydantic import BaseModel, Field
 
 from app.api.schemas.common import (
+    Configuration,
     ConfigurationIn,
     JointValue,
     QuatOut,
@@ -31,7 +32,7 @@ class FKResponse(BaseModel):
     """Frame poses in the root frame."""
 
     robot_id: str
-    q: list[float] = Field(description="The configuration used, in joint order.")
+    q: Configuration = Field(description="The configuration used, in joint order.")
     poses: dict[str, Pose] = Field(description="Frame name → pose in the root frame.")
     within_limits: bool = Field(description="Whether every joint lies within its limits.")
     joints_outside_limits: list[str] = Field(description="Joints outside their limits.")

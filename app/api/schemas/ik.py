@@ -3,26 +3,27 @@ task part shared with /ik/path)."""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from pydantic import BaseModel, Field
 
-from app.api.schemas.common import Finite, Matrix4, Position3, Quat, Schema, group_field
+from app.api.schemas.common import Configuration, Finite, JointPositions, Schema, group_field
+from app.api.schemas.poses import Pose
 from app.api.schemas.scenes import ObstacleIn
-from app.kinematics.collision import GEOMETRY_MODES
-from app.kinematics.ik.failure import REASONS
+from app.api.schemas.values import (
+    CollisionGeometry,
+    IKMode,
+    IKRankBy,
+    IKReason,
+    IKStatus,
+)
 from app.kinematics.ik.problem import (
     DEFAULT_TIMEOUT_MS,
     DEFAULT_TOLERANCE,
-    RANK_BY,
-    Mode,
-    Status,
 )
 
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False, strict=True)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False, strict=True)]
-
-Reason = Literal[REASONS]
 
 REASON_DOC = (
     "Why no solution was found (null on success): unreachable (the target position is "
@@ -36,22 +37,16 @@ SOLVER_VERSION_DOC = (
     "gives the same answer, bit for bit, on any worker of the same solver_version."
 )
 
+TARGET_DOC = (
+    "Desired placement of the frame in the root (world) frame; a pose an answer returns "
+    "(e.g. FK's) is accepted as is. Mode pose needs a position (`position` or `matrix`) and "
+    "a rotation (`orientation`, `rpy` or `matrix`); mode position a position; mode "
+    "orientation a rotation. Redundant fields must agree within 1e-9."
+)
 MODE_DOC = (
     "pose (default): full 6-D pose | position: the frame origin only, orientation free "
     "(3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only."
 )
-
-
-class Target(Schema):
-    """Desired placement of the frame in the root (world) frame."""
-
-    position: Position3 | None = Field(None, description="[x, y, z] in metres.")
-    orientation: Quat | None = Field(
-        None, description="Quaternion [x, y, z, w]; normalised if |q| is within 1e-3 of 1."
-    )
-    matrix: Matrix4 | None = Field(
-        None, description="4×4 homogeneous transform (instead of position/orientation)."
-    )
 
 
 class Tolerance(Schema):
@@ -73,7 +68,7 @@ class IKTaskIn(Schema):
         None, description="Frame to place; default the end effector (with `group`: its tip)."
     )
     group: str | None = group_field()
-    mode: Mode = Field("pose", description=MODE_DOC)
+    mode: IKMode = Field("pose", description=MODE_DOC)
     weights: Annotated[list[NonNegative], Field(min_length=6, max_length=6)] | None = Field(
         None,
         description="Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); "
@@ -102,7 +97,7 @@ class IKTaskIn(Schema):
     margin: NonNegative = Field(
         0.0, le=10.0, description="With avoid_collisions: clearance (m) a solution must keep."
     )
-    collision_geometry: Literal[GEOMETRY_MODES] = Field(
+    collision_geometry: CollisionGeometry = Field(
         "mesh", description="With avoid_collisions: meshes, or their convex hulls (faster)."
     )
     random_seed: int | None = Field(
@@ -122,7 +117,7 @@ class IKOptionsIn(IKTaskIn):
 
     # Finite, not JointValue: the union's validation errors would be named
     # seed.list[constrained-float].4; seed_configuration checks the bound, naming seed.4.
-    seed: list[Finite] | dict[str, Finite] | Annotated[str, Field(max_length=256)] | None = Field(
+    seed: list[Finite] | JointPositions | Annotated[str, Field(max_length=256)] | None = Field(
         None,
         description="Start configuration: one value per joint (joint order; with `group`, one "
         "per joint of the group is accepted too), joint → value (others: middle of their "
@@ -135,7 +130,7 @@ class IKOptionsIn(IKTaskIn):
 class IKRequest(IKOptionsIn):
     """One IK query."""
 
-    target: Target
+    target: Pose = Field(description=TARGET_DOC)
     num_solutions: int = Field(
         1,
         ge=1,
@@ -143,7 +138,7 @@ class IKRequest(IKOptionsIn):
         description="Distinct solutions wanted: one per branch (shoulder/elbow/wrist flags "
         "where the arm has them, else clusters in joint space; see docs/ik.md).",
     )
-    rank_by: Literal[RANK_BY] = Field(
+    rank_by: IKRankBy = Field(
         "seed_distance",
         description="Order of the solutions: seed_distance (smallest largest-joint move "
         "first) | manipulability (largest Yoshikawa measure first) | clearance (largest "
@@ -154,8 +149,8 @@ class IKRequest(IKOptionsIn):
 class IKSolutionOut(BaseModel):
     """A verified solution."""
 
-    q: list[float] = Field(description="Configuration in joint order (rad, m).")
-    joint_positions: dict[str, float]
+    q: Configuration = Field(description="Configuration in joint order (rad, m).")
+    joint_positions: JointPositions
     position_error: float = Field(description="‖p − p_t‖ (m), by forward kinematics.")
     orientation_error: float = Field(description="Rotation angle to the target (rad).")
     branch: str = Field(
@@ -180,11 +175,11 @@ class IKResponse(BaseModel):
 
     robot_id: str
     frame: str
-    mode: str
+    mode: IKMode
     success: bool
-    status: Status
-    q: list[float] = Field(description="Best configuration (first solution, or lowest error).")
-    joint_positions: dict[str, float]
+    status: IKStatus
+    q: Configuration = Field(description="Best configuration (first solution, or lowest error).")
+    joint_positions: JointPositions
     position_error: float = Field(description="Of q: ‖p − p_t‖ (m).")
     orientation_error: float = Field(description="Of q: rotation angle to the target (rad).")
     solutions: list[IKSolutionOut] = Field(
@@ -194,7 +189,7 @@ class IKResponse(BaseModel):
     restarts: int
     solve_time_ms: float
     method: str = Field(description="analytic | numeric | analytic+numeric")
-    reason: Reason | None = Field(description=REASON_DOC)
+    reason: IKReason | None = Field(description=REASON_DOC)
     detail: str | None = Field(description="The reason in a sentence, with numbers.")
     solver_version: str = Field(description=SOLVER_VERSION_DOC)
 
@@ -202,7 +197,9 @@ class IKResponse(BaseModel):
 class IKBatchRequest(IKOptionsIn):
     """Many targets for one frame."""
 
-    targets: list[Target] = Field(min_length=1, description="Targets, solved in order.")
+    targets: list[Pose] = Field(
+        min_length=1, description="Targets, solved in order. Each as `target` of /ik."
+    )
     chain_seeds: bool = Field(
         True,
         description="Seed each target with the previous solution (trajectories); false: every "
@@ -217,14 +214,14 @@ class IKBatchItem(BaseModel):
     """Result for one target."""
 
     success: bool
-    status: Status
-    q: list[float]
+    status: IKStatus
+    q: Configuration
     position_error: float
     orientation_error: float
     iterations: int
     restarts: int
     solve_time_ms: float
-    reason: Reason | None = Field(description=REASON_DOC)
+    reason: IKReason | None = Field(description=REASON_DOC)
     detail: str | None = Field(description="The reason in a sentence, with numbers.")
 
 
@@ -233,7 +230,7 @@ class IKBatchResponse(BaseModel):
 
     robot_id: str
     frame: str
-    mode: str
+    mode: IKMode
     joint_names: list[str]
     solved: int = Field(description="How many targets succeeded.")
     results: list[IKBatchItem]

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from pydantic import BaseModel, Field
 
-from app.api.schemas.common import ConfigurationIn
-from app.kinematics.jacobian import Reference
+from app.api.schemas.common import Configuration, ConfigurationIn
+from app.api.schemas.values import JacobianReference
 
 REFERENCE_DOC = (
     "world (default): origin velocity and angular velocity in world axes (Pinocchio "
@@ -21,7 +21,7 @@ class JacobianRequest(ConfigurationIn):
     frame: str | None = Field(
         None, description="Frame; default the end effector (with `group`: the group's tip)."
     )
-    reference: Reference = Field("world", description=REFERENCE_DOC)
+    reference: JacobianReference = Field("world", description=REFERENCE_DOC)
 
 
 class JacobianResponse(BaseModel):
@@ -30,8 +30,8 @@ class JacobianResponse(BaseModel):
 
     robot_id: str
     frame: str
-    reference: str
-    q: list[float]
+    reference: JacobianReference
+    q: Configuration
     jacobian: list[list[float]] = Field(
         description="6×n (with `group`: 6×k, k the group's joints); linear rows in m/rad or m/m."
     )

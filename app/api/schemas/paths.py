@@ -6,13 +6,11 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, Field
 
-from app.api.schemas.common import Finite, Schema
-from app.api.schemas.ik import IKTaskIn, Positive, Target
+from app.api.schemas.common import Configuration, Finite, JointPositions, Schema
+from app.api.schemas.ik import IKTaskIn, Positive
+from app.api.schemas.poses import Pose
 from app.api.schemas.timing import TimingIn, TimingOut
-from app.kinematics.paths.failures import PATH_REASONS
-
-#: Why a path stops (the first point that cannot be reached).
-FailureReason = Literal[PATH_REASONS]
+from app.api.schemas.values import IKMode, PathFailureReason
 
 
 class MaxStep(Schema):
@@ -34,7 +32,7 @@ class LineSegment(Schema):
     """A straight line from the previous pose to `to` (orientation by slerp)."""
 
     type: Literal["line"]
-    to: Target
+    to: Pose
 
 
 class ArcSegment(Schema):
@@ -42,8 +40,8 @@ class ArcSegment(Schema):
     `via`'s on the first part of the arc and to `to`'s on the second."""
 
     type: Literal["arc"]
-    via: Target
-    to: Target
+    via: Pose
+    to: Pose
 
 
 Segment = Annotated[LineSegment | ArcSegment, Field(discriminator="type")]
@@ -52,13 +50,13 @@ Segment = Annotated[LineSegment | ArcSegment, Field(discriminator="type")]
 class PathRequest(IKTaskIn):
     """A Cartesian path from a start configuration: waypoints or segments (exactly one)."""
 
-    start: list[Finite] | dict[str, Finite] | Annotated[str, Field(max_length=256)] = Field(
+    start: list[Finite] | JointPositions | Annotated[str, Field(max_length=256)] = Field(
         description="Start configuration: one value per joint (joint order; with `group`, one "
         "per joint of the group is accepted too), joint → value (others: middle of their "
         'limits), or a named state of the SRDF (e.g. "ready"). The path starts at the '
         "frame's pose there; it is the first point of the answer."
     )
-    waypoints: list[Target] | None = Field(
+    waypoints: list[Pose] | None = Field(
         None,
         min_length=1,
         max_length=10_000,
@@ -99,7 +97,7 @@ class PathRequest(IKTaskIn):
 class PathPointOut(BaseModel):
     """One point of the joint path, verified by forward kinematics."""
 
-    q: list[float] = Field(description="Configuration in joint order (rad, m).")
+    q: Configuration = Field(description="Configuration in joint order (rad, m).")
     position_error: float = Field(description="‖p − p_path(s)‖ (m).")
     orientation_error: float = Field(description="Rotation angle to the path's pose (rad).")
     s: float = Field(description="Path parameter in [0, 1] of this point's pose.")
@@ -110,9 +108,12 @@ class PathFailureOut(BaseModel):
 
     index: int = Field(description="Index of the failed waypoint of the interpolated path.")
     s: float = Field(description="Its path parameter in [0, 1].")
-    reason: FailureReason
+    reason: PathFailureReason = Field(
+        description="Why the path stops there: an IK reason, or joint_step (a jump larger "
+        "than max_joint_step) | branch (the point is on another branch)."
+    )
     detail: str = Field(description="What went wrong, with numbers.")
-    q: list[float] = Field(description="Best configuration found for that point.")
+    q: Configuration = Field(description="Best configuration found for that point.")
     position_error: float = Field(description="Of q (m).")
     orientation_error: float = Field(description="Of q (rad).")
 
@@ -122,7 +123,7 @@ class PathResponse(BaseModel):
 
     robot_id: str
     frame: str
-    mode: str
+    mode: IKMode
     joint_names: list[str]
     fraction: float = Field(description="Path parameter s reached (1.0: the whole path).")
     points: list[PathPointOut] = Field(description="The start, then every accepted point.")

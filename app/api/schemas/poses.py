@@ -6,18 +6,71 @@ import math
 from typing import Any
 
 import numpy as np
-from pydantic import BaseModel, Field
+from pydantic import ConfigDict, Field
 
-from app.api.schemas.common import Matrix4Out, QuatOut, Vec3Out
+from app.api.schemas.common import Matrix4, Position3, Quat, Schema, Vec3
+from app.kinematics.placement import Placement, placement
 
 
-class Pose(BaseModel):
-    """A frame's placement in the robot's root (world) frame."""
+def _no_null_defaults(schema: dict[str, Any]) -> None:
+    """Drop ``default: null`` from the properties (pydantic writes it in validation mode,
+    FastAPI leaves it out): one ``Pose`` component, whichever way it is generated."""
+    for prop in schema.get("properties", {}).values():
+        if "default" in prop and prop["default"] is None:
+            del prop["default"]
 
-    position: Vec3Out = Field(description="[x, y, z] in metres.")
-    orientation: QuatOut = Field(description="Unit quaternion [x, y, z, w], w ≥ 0.")
-    rpy: Vec3Out = Field(description="[roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll).")
-    matrix: Matrix4Out = Field(description="4×4 homogeneous transform (metres).")
+
+class Pose(Schema):
+    """A frame's placement in the robot's root (world) frame, the same shape in and out.
+
+    Answers fill all four fields. A request may give any subset that states what its
+    endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+    ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+    obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+    request is a 422 naming them. An answer's pose can be sent back as is."""
+
+    # Absent fields are None, but null is not a value (the schema has no null, no default).
+    model_config = ConfigDict(json_schema_extra=_no_null_defaults)
+
+    position: Position3 = Field(
+        None,
+        description="[x, y, z] in metres. A position is given by `position` or `matrix`.",
+    )
+    orientation: Quat = Field(
+        None,
+        description="Quaternion [x, y, z, w] (answers: unit, w ≥ 0); normalised if |q| is "
+        "within 1e-3 of 1; q and −q are the same rotation. A rotation is given by "
+        "`orientation`, `rpy` or `matrix`.",
+    )
+    rpy: Vec3 = Field(
+        None, description="[roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll)."
+    )
+    matrix: Matrix4 = Field(
+        None,
+        description="4×4 homogeneous transform root ← frame (metres): a rigid transform "
+        "(orthonormal rotation within 1e-6, determinant +1, last row [0, 0, 0, 1]).",
+    )
+
+    def placement(
+        self,
+        field: str,
+        *,
+        need_position: bool = False,
+        need_rotation: bool = False,
+        need: str = "",
+    ) -> Placement:
+        """The validated placement (:func:`app.kinematics.placement.placement`), errors
+        naming ``<field>.position`` etc."""
+        return placement(
+            self.position,
+            self.orientation,
+            self.rpy,
+            self.matrix,
+            field,
+            need_position=need_position,
+            need_rotation=need_rotation,
+            need=need,
+        )
 
 
 def pose_json(T: np.ndarray) -> dict[str, Any]:

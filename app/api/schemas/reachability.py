@@ -4,20 +4,23 @@ root frame; quaternions [x, y, z, w]; the grid and bins of
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from fastapi import Path as PathParam
 from pydantic import BaseModel, Field
 
 from app.api.schemas.common import Finite, Quat, Schema, Vec3
-from app.kinematics.analysis import Part
+from app.api.schemas.poses import Pose
+from app.api.schemas.values import (
+    JacobianPart,
+    JobStatus,
+    ReachabilitySampling,
+    SelfCollisionMode,
+)
 from app.kinematics.reachability.spec import (
     MAX_ORIENTATION_DIVISIONS,
     MAX_SAMPLES,
-    SAMPLINGS,
-    SELF_COLLISION_MODES,
 )
-from app.storage.build_jobs import JOB_STATUSES
 
 JobId = Annotated[str, PathParam(description="Build job id.", max_length=64)]
 MapId = Annotated[
@@ -49,7 +52,7 @@ class BuildRequest(Schema):
         description="d: 4·d³ orientation bins (cubed 3-sphere, each ≈ 180°/d of rotation per "
         "axis); 0 = one bin (position-only map).",
     )
-    part: Part | None = Field(
+    part: JacobianPart | None = Field(
         None, description="Manipulability rows: full (default) | translation | rotation."
     )
     rows: list[str | int] | None = Field(
@@ -58,13 +61,13 @@ class BuildRequest(Schema):
     samples: int = Field(
         200_000, ge=1, le=MAX_SAMPLES, description="Joint-space samples (grid: rounded)."
     )
-    sampling: Literal[SAMPLINGS] = Field(
+    sampling: ReachabilitySampling = Field(
         "random",
         description="random: uniform within joint limits | grid: g = round(samples^(1/k)) "
         "values per joint.",
     )
     seed: int = Field(0, ge=0, le=2**63 - 1, description="Seed of the random samples.")
-    self_collision: Literal[SELF_COLLISION_MODES] = Field(
+    self_collision: SelfCollisionMode = Field(
         "ignore",
         description="Drop self-colliding samples using the collision module's geometry "
         "(mesh or convex hulls); one collision query per sample, far slower.",
@@ -88,7 +91,7 @@ class JobResponse(BaseModel):
     job_id: str
     robot_id: str
     frame: str
-    status: Literal[JOB_STATUSES]
+    status: JobStatus
     map_id: str | None = Field(description="The stored map, once done.")
     error: str | None
     progress: ProgressOut
@@ -119,9 +122,9 @@ class MapInfo(BaseModel):
     rows: list[str]
     joints: list[str] = Field(description="The sampled joints (those that move the frame).")
     samples: int
-    sampling: str
+    sampling: ReachabilitySampling
     seed: int
-    self_collision: str
+    self_collision: SelfCollisionMode
     samples_per_second: float | None
     build_seconds: float | None
     robot_fingerprint: str
@@ -134,18 +137,16 @@ class MapList(BaseModel):
     maps: list[MapInfo]
 
 
-class PoseIn(Schema):
-    """A pose to look up; without orientation, any orientation (best over the voxel)."""
-
-    position: Vec3 = Field(description="[x, y, z] (m), root frame.")
-    orientation: Quat | None = Field(None, description="Unit quaternion [x, y, z, w].")
-
-
 class QueryRequest(Schema):
     """Poses to look up in a map: ``poses``, or the compact ``positions``/``orientations``."""
 
     map_id: str = Field(description="The map to query.", max_length=64)
-    poses: list[PoseIn] | None = Field(None, description="Poses (root frame).")
+    poses: list[Pose] | None = Field(
+        None,
+        description="Poses (root frame): each needs a position (`position` or `matrix`); "
+        "without a rotation (`orientation`, `rpy` or `matrix`), any orientation (best over "
+        "the voxel).",
+    )
     positions: list[Vec3] | None = Field(None, description="Compact form: N×3 positions (m).")
     orientations: list[Quat] | None = Field(
         None, description="Compact form: N×4 quaternions [x, y, z, w] (omit: any orientation)."

@@ -3,15 +3,12 @@ SI units, frames, semantics, files), and the bodies of robot writes (DH tables, 
 
 from __future__ import annotations
 
-from typing import Literal
-
 from pydantic import BaseModel, Field
 
 from app.api.schemas.common import Schema, Text, Vec3Out
 from app.api.schemas.semantics import EndEffectorOut, GroupOut, NamedStateOut
+from app.api.schemas.values import AngleUnit, DHConvention, DHJointType, LengthUnit
 from app.storage.store import ID_PATTERN
-from dh2urdf.parse import ANGLE_UNITS, LENGTH_UNITS
-from dh2urdf.table import Convention, JointType
 
 
 class RobotSummaryOut(BaseModel):
@@ -123,8 +120,8 @@ class RobotDetail(BaseModel):
 class DHUnitsDoc(Schema):
     """Units of the table's numbers (the service converts to SI on import)."""
 
-    length: Literal[tuple(LENGTH_UNITS)] = Field("m", description="Unit of a, d, xyz, limits.")
-    angle: Literal[ANGLE_UNITS] = Field("rad", description="Unit of alpha, theta, rpy, limits.")
+    length: LengthUnit = Field("m", description="Unit of a, d, xyz, limits.")
+    angle: AngleUnit = Field("rad", description="Unit of alpha, theta, rpy, limits.")
 
 
 class DHTransformDoc(Schema):
@@ -144,7 +141,7 @@ class DHRowDoc(Schema):
     """One row: joint i's DH parameters."""
 
     name: Text | None = Field(None, description="Joint name (default j<i>, 1-based).")
-    type: JointType | None = Field("revolute", description="Joint kind (null: revolute).")
+    type: DHJointType | None = Field("revolute", description="Joint kind (null: revolute).")
     a: float = Field(description="Link length (a_i; a_{i-1} in the modified convention).")
     alpha: float = Field(description="Link twist (α_i; α_{i-1} in the modified convention).")
     d: float = Field(description="Link offset; the constant part for a prismatic joint.")
@@ -168,7 +165,7 @@ class DHTableDoc(Schema):
         pattern=ID_PATTERN.pattern, description="Robot id: 1-64 of a-z, 0-9, '_' and '-'."
     )
     description: Text | None = Field("", max_length=1000)
-    convention: Convention
+    convention: DHConvention
     units: DHUnitsDoc | None = Field(default_factory=DHUnitsDoc)
     base: DHTransformDoc | None = Field(None, description="World → DH frame 0.")
     tool: DHTransformDoc | None = Field(None, description="DH frame n → tool (TCP).")

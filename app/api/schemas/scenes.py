@@ -4,13 +4,15 @@ root frame, quaternions [x, y, z, w])."""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from fastapi import Path
 from pydantic import BaseModel, Field, Strict
 
-from app.api.schemas.common import Quat, Schema, Text, Vec3, Vec3Out
-from app.kinematics.obstacles import MAX_NAME_LENGTH, MAX_OBSTACLES, SHAPES
+from app.api.schemas.common import Schema, Text, Vec3Out
+from app.api.schemas.poses import Pose
+from app.api.schemas.values import ObstacleShape
+from app.kinematics.obstacles import MAX_NAME_LENGTH, MAX_OBSTACLES
 from app.storage.scenes import MAX_DESCRIPTION, NAME_PATTERN
 
 #: A finite, strictly positive length (m).
@@ -20,22 +22,13 @@ SceneName = Annotated[
 ]
 
 
-class ObstaclePose(Schema):
-    """Placement of an obstacle in the robot's root frame."""
-
-    position: Vec3 = Field([0.0, 0.0, 0.0], description="Centre [x, y, z] (m).")
-    orientation: Quat = Field(
-        [0.0, 0.0, 0.0, 1.0], description="Unit quaternion [x, y, z, w] (root ← obstacle)."
-    )
-
-
 class ObstacleIn(Schema):
     """A box, sphere, cylinder or capsule in the robot's root frame."""
 
     name: Text = Field(
         min_length=1, max_length=MAX_NAME_LENGTH, description="Unique name in the set."
     )
-    shape: Literal[SHAPES] = Field(description="Solid type.")
+    shape: ObstacleShape = Field(description="Solid type.")
     size: Annotated[list[PositiveLength], Field(min_length=3, max_length=3)] | None = Field(
         None, description="box: full edge lengths [x, y, z] (m)."
     )
@@ -47,18 +40,22 @@ class ObstacleIn(Schema):
         description="cylinder: full height along local z (m); capsule: length of the "
         "segment between the hemisphere centres (m).",
     )
-    pose: ObstaclePose | None = Field(None, description="Placement; default the identity.")
+    pose: Pose | None = Field(
+        None,
+        description="Placement root ← obstacle; default the identity (a missing position is "
+        "the origin, a missing rotation the identity).",
+    )
 
 
 class ObstacleOut(BaseModel):
     """A stored obstacle (normalised orientation)."""
 
     name: str
-    shape: str
+    shape: ObstacleShape
     size: Vec3Out | None = None
     radius: float | None = None
     length: float | None = None
-    pose: ObstaclePose
+    pose: Pose = Field(description="Placement root ← obstacle (every field filled).")
 
 
 class SceneIn(Schema):

@@ -10,6 +10,7 @@ from typing import Any
 
 from pydantic import BaseModel, Field
 
+from app.api.schemas.common import JointPositions
 from app.kinematics.groups import named_states, robot_groups
 from app.kinematics.models import RobotModel
 
@@ -42,7 +43,7 @@ class NamedStateOut(BaseModel):
 
     name: str
     group: str | None = Field(description="The group it is a state of (null if not given).")
-    joint_positions: dict[str, float] = Field(description="Joint → value (rad or m).")
+    joint_positions: JointPositions = Field(description="Joint → value (rad or m).")
 
 
 def semantics_detail(robot: RobotModel) -> dict[str, Any]:

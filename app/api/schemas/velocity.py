@@ -3,13 +3,12 @@ wx, wy, wz] in m/s and rad/s; joint rates in joint order, rad/s or m/s)."""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from pydantic import BaseModel, Field
 
-from app.api.schemas.common import ConfigurationIn, Finite
-from app.kinematics.ik.problem import Mode
-from app.kinematics.jacobian import TWIST_REFERENCES
+from app.api.schemas.common import Configuration, ConfigurationIn, Finite
+from app.api.schemas.values import IKMode, TwistReference, VelocityDirection
 from app.kinematics.velocity import MAX_DAMPING, MAX_RATE, SINGULAR_THRESHOLD
 
 #: A rate (rad/s, m/s) within ±MAX_RATE.
@@ -25,7 +24,7 @@ class VelocityRequest(ConfigurationIn):
     frame: str | None = Field(
         None, description="Frame; default the end effector (with `group`: the group's tip)."
     )
-    reference: Literal[TWIST_REFERENCES] = Field(
+    reference: TwistReference = Field(
         "world",
         description="Axes of the twist: world (origin velocity and angular velocity in world "
         "axes, Pinocchio LOCAL_WORLD_ALIGNED) | local (the frame's own axes, LOCAL).",
@@ -39,7 +38,7 @@ class VelocityRequest(ConfigurationIn):
     twist: Twist | None = Field(
         None, description="Inverse: [vx, vy, vz, wx, wy, wz] (m/s, rad/s) to realise."
     )
-    mode: Mode = Field(
+    mode: IKMode = Field(
         "pose",
         description="Inverse only: task rows to match (position: vx, vy, vz only; "
         "orientation: wx, wy, wz only).",
@@ -57,9 +56,9 @@ class VelocityResponse(BaseModel):
 
     robot_id: str
     frame: str
-    reference: str
-    direction: Literal["forward", "inverse"]
-    q: list[float]
+    reference: TwistReference
+    direction: VelocityDirection
+    q: Configuration
     joint_velocities: list[float] = Field(description="q̇ in joint order (rad/s, m/s).")
     twist: list[float] = Field(description="J·q̇ = [vx, vy, vz, wx, wy, wz] (m/s, rad/s).")
     residual: float | None = Field(None, description="Inverse: ‖J q̇ − twist‖ on the task rows.")

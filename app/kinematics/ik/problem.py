@@ -20,8 +20,8 @@ import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group, expand, state_configuration
-from app.kinematics.models import MAX_POSITION, RobotModel, check_bounded
-from app.kinematics.rotations import quaternion_to_matrix, unit_quaternion
+from app.kinematics.models import MAX_POSITION, RobotModel
+from app.kinematics.placement import placement
 
 if TYPE_CHECKING:
     from app.kinematics.ik.precompute import IKChain
@@ -39,8 +39,6 @@ MODE_ROWS = {"pose": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "orientation": (
 DEFAULT_TOLERANCE = (1e-5, 1e-5)
 #: Default time budget (ms).
 DEFAULT_TIMEOUT_MS = 5.0
-#: Largest deviation of RᵀR from I (and of the bottom row from [0 0 0 1]) accepted in a matrix.
-MATRIX_TOL = 1e-6
 
 
 @dataclass(frozen=True, slots=True)
@@ -191,48 +189,32 @@ def target_placement(
     matrix: Sequence[Sequence[float]] | None,
     mode: str,
     field: str = "target",
+    rpy: Sequence[float] | None = None,
 ) -> pin.SE3:
-    """A target as a Pinocchio SE3, validated; components a mode ignores may be omitted.
+    """An IK target as a Pinocchio SE3, validated by :func:`~app.kinematics.placement.placement`
+    (redundant components must agree); components the mode ignores may be omitted.
 
     Parameters
     ----------
-    position, orientation
-        [x, y, z] (m) and the unit quaternion [x, y, z, w], both in the root frame.
-    matrix
-        A 4×4 homogeneous transform instead of position/orientation (orthonormal rotation
-        within :data:`MATRIX_TOL`, projected onto the nearest rotation).
+    position, orientation, rpy, matrix
+        [x, y, z] (m), the unit quaternion [x, y, z, w], [roll, pitch, yaw] (rad) and the
+        4×4 homogeneous transform, in the root frame; any subset that agrees.
     mode
-        The IK mode: ``position`` needs no orientation, ``orientation`` no position.
+        The IK mode: ``pose`` needs a position and a rotation, ``position`` a position,
+        ``orientation`` a rotation (the missing part is the identity's).
     field
         The wire name of the target (``target``, ``targets.3``) for error messages.
     """
-    if matrix is not None:
-        if position is not None or orientation is not None:
-            raise InvalidInputError("give either matrix or position/orientation", field)
-        M = np.array(matrix, dtype=float)
-        if np.abs(M[3] - np.array([0.0, 0.0, 0.0, 1.0])).max() > MATRIX_TOL:
-            raise InvalidInputError("the last row must be [0, 0, 0, 1]", f"{field}.matrix")
-        R = M[:3, :3]
-        if np.abs(R.T @ R - np.eye(3)).max() > MATRIX_TOL or np.linalg.det(R) <= 0.0:
-            raise InvalidInputError(
-                "the rotation part must be orthonormal with determinant +1", f"{field}.matrix"
-            )
-        for i in range(3):  # the translation column: target.matrix.<row>.3
-            check_bounded(M[i, 3], f"{field}.matrix.{i}.3", MAX_POSITION, "m")
-        U, _, Vt = np.linalg.svd(R)  # nearest rotation (removes rounding)
-        return pin.SE3(U @ Vt, M[:3, 3].copy())
-    p = np.zeros(3)
-    R = np.eye(3)
-    if position is not None:
-        p = np.array(position, dtype=float)
-        check_bounded(p, f"{field}.position", MAX_POSITION, "m")
-    elif mode != "orientation":
-        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.position")
-    if orientation is not None:
-        R = quaternion_to_matrix(unit_quaternion(orientation, f"{field}.orientation"))
-    elif mode != "position":
-        raise InvalidInputError(f"required for mode {mode!r}", f"{field}.orientation")
-    return pin.SE3(R, p)
+    return placement(
+        position,
+        orientation,
+        rpy,
+        matrix,
+        field,
+        need_position=mode != "orientation",
+        need_rotation=mode != "position",
+        need=f"for mode {mode!r}",
+    ).se3()
 
 
 def seed_configuration(
