@@ -44,10 +44,29 @@ Position3 = Annotated[list[Coordinate], Field(min_length=3, max_length=3)]
 #: (:meth:`~app.kinematics.models.RobotModel.apply_joint_map`), so a seed's union does not
 #: blur the error.
 JointPositions = TypeAliasType(
-    "JointPositions", Annotated[dict[str, Finite], Field(max_length=1024)]
+    "JointPositions",
+    Annotated[
+        dict[str, Finite],
+        Field(
+            max_length=1024,
+            description="Joint name → value: rad for revolute and continuous joints, m for "
+            "prismatic ones, each within ±10000 (a value beyond is a 422 naming "
+            "`<field>.<joint>`).",
+        ),
+    ],
 )
 #: One value per actuated joint in joint order (rad or m): the ``Configuration`` component.
-Configuration = TypeAliasType("Configuration", Annotated[list[JointValue], Field(max_length=1024)])
+Configuration = TypeAliasType(
+    "Configuration",
+    Annotated[
+        list[JointValue],
+        Field(
+            max_length=1024,
+            description="One value per actuated joint in joint order (GET /robots/{id}): rad "
+            "for revolute and continuous joints, m for prismatic ones.",
+        ),
+    ],
+)
 
 
 def _valid_text(value: str) -> str:
