@@ -3,11 +3,13 @@ serve: `python -m app` runs with every package that only the development lock ho
 unimportable, and answers the main operations.
 
 The packages of requirements-dev.lock that requirements.lock lacks (pytest, Playwright,
-schemathesis, httpx, …) are blocked by a ``sitecustomize`` on ``PYTHONPATH`` (every
-process the server starts inherits it: the mesh-check and xacro children too): importing
-one raises ``ModuleNotFoundError`` as it would in `make run`'s venv (``.venv-run``), so a
-service module that needs a development-only package fails here. The image build
-(`make container-check`) checks the same lock for real, without the source tree.
+schemathesis, httpx, …) are blocked by a ``sitecustomize`` on ``PYTHONPATH``, in the server
+and the processes it starts with its environment (uvicorn workers, map-build workers):
+importing one raises ``ModuleNotFoundError`` as it would in `make run`'s venv
+(``.venv-run``), so a service module that needs a development-only package fails here. The
+bounded children of uploads run ``python -I`` (no ``PYTHONPATH``) and are not covered; the
+image build (`make container-check`) checks the same lock for real, without the source
+tree.
 """
 
 from __future__ import annotations
