@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean
+.PHONY: install install-run run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean
 
 install: $(STAMP)
 
@@ -47,9 +47,21 @@ container-check:
 compose-check: install
 	PATH=$(CURDIR)/$(BIN):$$PATH bash deploy/compose-check.sh
 
+# The serving venv: exactly the runtime lock (what the Docker image installs), no test or
+# lint tools; its own directory and stamp, so `make run` and `make test` work in either
+# order in one checkout. Re-installs when the lock changes.
+RUN_VENV  := .venv-run
+RUN_STAMP := $(RUN_VENV)/.installed
+install-run: $(RUN_STAMP)
+$(RUN_STAMP): pyproject.toml $(RT_LOCK)
+	test -x $(RUN_VENV)/bin/python || $(PYTHON) -m venv $(RUN_VENV)
+	$(RUN_VENV)/bin/python -m pip install --quiet --no-deps --require-hashes -r $(RT_LOCK)
+	$(RUN_VENV)/bin/python -m pip install --quiet --no-deps --no-build-isolation -e .
+	touch $(RUN_STAMP)
+
 # The same entry as the Docker image: settings from DENAVIT_* (HOST and PORT override).
-run: install
-	DENAVIT_HOST=$(HOST) DENAVIT_PORT=$(PORT) $(BIN)/python -m app
+run: install-run
+	DENAVIT_HOST=$(HOST) DENAVIT_PORT=$(PORT) $(RUN_VENV)/bin/python -m app
 
 lint: install
 	$(BIN)/ruff check app dh2urdf robots tests bench deploy scripts
@@ -104,4 +116,4 @@ openapi: install
 	$(BIN)/python -m app openapi docs/openapi.json
 
 clean:
-	rm -rf $(VENV) $(BENCH_VENV) .pytest_cache .ruff_cache
+	rm -rf $(VENV) $(RUN_VENV) $(BENCH_VENV) .pytest_cache .ruff_cache

@@ -8,6 +8,7 @@ agree with pyproject.toml's == pins and with each other is.
 from __future__ import annotations
 
 import re
+import subprocess
 import tomllib
 from pathlib import Path
 
@@ -105,3 +106,21 @@ def test_make_install_uses_the_dev_lock() -> None:
     assert recipe, "the install recipe"
     assert "pip install --quiet --no-deps --require-hashes -r $(LOCK)" in recipe[1]
     assert "--no-deps --no-build-isolation -e ." in recipe[1]
+
+
+def test_make_run_installs_the_runtime_lock_only_in_its_own_venv() -> None:
+    """What `make run` would do from scratch (``make -n -B``: printed, not run): the runtime
+    lock and the project into ``.venv-run``, then ``python -m app`` from there; never the
+    development lock or ``.venv`` (so `make run` and `make test` work in either order).
+    tests/test_runtime_lock_serves.py checks that this lock is enough to serve."""
+    out = subprocess.run(
+        ["make", "-n", "-B", "run"], cwd=ROOT, capture_output=True, text=True, check=True
+    ).stdout
+    lines = out.splitlines()
+    assert "requirements-dev.lock" not in out and ".venv/" not in out, out
+    assert any(
+        ".venv-run/bin/python -m pip install --quiet --no-deps --require-hashes "
+        "-r requirements.lock" in line
+        for line in lines
+    ), out
+    assert lines[-1].endswith(".venv-run/bin/python -m app"), out

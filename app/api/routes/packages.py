@@ -117,14 +117,16 @@ async def upload_robot_package(
     ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES`` once unpacked (counted while decompressing).
     Mesh and texture references resolve inside the package: relative paths and
     ``file://<relative path>`` against the description's folder, ``package://<pkg>/…``
-    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of
-    the archive); ``package://example-robot-data/…`` names the catalog's files. A
-    reference that leaves the package, an absolute path, another scheme or a missing file
-    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that
-    cannot be read is a 422 naming it, so a 201 means collisions work. The stored URDF
-    (GET /robots/{robot_id}/urdf) names every file ``package://files/<path in the
-    archive>``, served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF
-    is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
+    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of the
+    archive); ``package://example-robot-data/robots/<folder>/<path>`` names the archive's
+    own copy when it has one (``<path>``, ``<folder>/<path>`` or ``robots/<folder>/<path>``
+    under the description's folder or its nearest parent with one), else the catalog's file.
+    A reference that leaves the package, an absolute path, another scheme or a missing file
+    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that cannot
+    be read is a 422 naming it, so a 201 means collisions work. The stored URDF (GET
+    /robots/{robot_id}/urdf) names every file ``package://files/<path in the archive>``,
+    served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF is checked
+    as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
     form); 409 if the id is taken. Nothing is stored on any refusal.
     """
     limit = settings.max_package_bytes

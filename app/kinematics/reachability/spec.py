@@ -3,11 +3,13 @@
 Grid
 ----
 A map covers an axis-aligned box of the root (world) frame, ``lower`` … ``lower + shape·s``
-with cubic position voxels of edge ``s`` (m). Voxel index i = ⌊(p − lower)/s⌋ per axis; a
-position outside the box belongs to no cell (not reachable). The box defaults to a
-conservative reach box (:func:`default_bounds`): centred on the first joint of the frame's
-chain, half-size the sum of the distances between consecutive joint origins along the
-chain plus the prismatic travels plus the frame's offset. Each voxel holds
+with cubic position voxels of edge ``s`` (m), by default :func:`default_voxel_size` (the box's
+longest edge / :data:`DEFAULT_VOXELS_PER_EDGE`, coarser when needed to stay within
+:data:`MAX_CELLS`): a coarse map of any arm, whatever its reach. Voxel index
+i = ⌊(p − lower)/s⌋ per axis; a position outside the box belongs to no cell (not reachable).
+The box defaults to a conservative reach box (:func:`default_bounds`): centred on the first
+joint of the frame's chain, half-size the sum of the distances between consecutive joint
+origins along the chain plus the prismatic travels plus the frame's offset. Each voxel holds
 :func:`~app.kinematics.reachability.bins.orientation_bins` orientation bins.
 
 Cells
@@ -46,6 +48,8 @@ from app.kinematics.reachability.bins import orientation_bins
 MAX_CELLS = 1 << 24
 MAX_SAMPLES = 1_000_000_000
 MAX_ORIENTATION_DIVISIONS = 12
+#: Voxels along the longest edge of the box when the request gives no voxel size.
+DEFAULT_VOXELS_PER_EDGE = 24
 
 
 @dataclass
@@ -117,11 +121,27 @@ def default_bounds(robot: RobotModel, frame: str) -> tuple[np.ndarray, np.ndarra
     return center - reach, center + reach
 
 
+def default_voxel_size(
+    lower: np.ndarray, upper: np.ndarray, bins: int, max_cells: int = MAX_CELLS
+) -> float:
+    """The voxel edge (m) of a request that gives none: the longest edge of the box
+    ``lower``…``upper`` (m, root frame) over :data:`DEFAULT_VOXELS_PER_EDGE`, enlarged by
+    steps of 5 % until the grid's voxels × ``bins`` orientation bins fit ``max_cells``
+    (or the grid is one voxel)."""
+    extent = np.asarray(upper, dtype=float) - np.asarray(lower, dtype=float)
+    size = float(np.max(extent)) / DEFAULT_VOXELS_PER_EDGE
+    while True:
+        voxels = math.prod(max(1, math.ceil(e / size - 1e-9)) for e in extent)
+        if voxels * bins <= max_cells or voxels == 1:  # one voxel: make_spec's check refuses
+            return size
+        size *= 1.05
+
+
 def make_spec(
     robot: RobotModel,
     frame: str,
     *,
-    voxel_size: float,
+    voxel_size: float | None = None,
     lower: Sequence[float] | None = None,
     upper: Sequence[float] | None = None,
     orientation_divisions: int = 4,
@@ -133,10 +153,13 @@ def make_spec(
     self_collision: str = "ignore",
     max_cells: int = MAX_CELLS,
 ) -> MapSpec:
-    """Validate a build request; every error names its request field."""
+    """Validate a build request; every error names its request field.
+
+    ``voxel_size`` ``None``: :func:`default_voxel_size` of the box (given or default).
+    """
     ridx = task_rows(part, rows)
     cols = support_columns(robot, frame)
-    if not (math.isfinite(voxel_size) and voxel_size > 0):
+    if voxel_size is not None and not (math.isfinite(voxel_size) and voxel_size > 0):
         raise InvalidInputError("must be a positive number of metres", "voxel_size")
     if not 0 <= orientation_divisions <= MAX_ORIENTATION_DIVISIONS:
         raise InvalidInputError(f"must be 0 … {MAX_ORIENTATION_DIVISIONS}", "orientation_divisions")
@@ -163,6 +186,11 @@ def make_spec(
             f"max must exceed min on every axis (axis {'xyz'[i]}: {hi[i]} <= {lo[i]})",
             f"bounds.max.{i}",
         )
+    if voxel_size is None:
+        with np.errstate(over="ignore"):
+            if not np.all(np.isfinite(hi - lo)):
+                raise InvalidInputError("the box is too large (give smaller bounds)", "bounds")
+        voxel_size = default_voxel_size(lo, hi, orientation_bins(orientation_divisions), max_cells)
     with np.errstate(over="ignore"):
         extent = (hi - lo) / voxel_size
     if not np.all(extent <= 1e7):

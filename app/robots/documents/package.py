@@ -13,9 +13,13 @@ URDF (and SRDF) text the service stores:
    a relative path or ``file://<relative path>`` against the description's directory,
    ``package://<pkg>/<path>`` against package ``<pkg>``, which is the ``<name>`` of a
    ``package.xml`` in the archive (its directory) or else a top-level folder of the
-   archive. ``package://example-robot-data/...`` (the catalog's files) stays as it is when
-   no package of the archive has that name. In an expanded xacro, the paths ``$(find)``
-   gives (``/package/<folder>/…``, with or without ``file://``) are the package's files.
+   archive. ``package://example-robot-data/robots/<folder>/<path>`` (the catalog's files)
+   when no package of the archive has that name: the archive's own copy when it has one
+   (``robots/<folder>/<path>``, ``<folder>/<path>`` or ``<path>`` under the description's
+   directory or its nearest ancestor that has one: an uploaded copy of a catalog package
+   always uses its own files), else the catalog's file, the URI kept as it is. In an
+   expanded xacro, the paths ``$(find)`` gives (``/package/<folder>/…``, with or without
+   ``file://``) are the package's files.
    Absolute paths, ``file:///…``, other schemes, unknown packages and paths leaving the
    archive (after normalising ``..``; the archive holds no links) are refused, as is a
    reference to a file the archive does not have;
@@ -130,6 +134,9 @@ class _Resolver:
             pkg, _, rest = uri[len("package://") :].partition("/")
             if pkg not in self.packages:
                 if pkg == CATALOG_PACKAGE and check_resource_uri(uri) is None:
+                    own = self._own_copy(rest)
+                    if own is not None:
+                        return self._canonical(tag, uri, own)
                     file = self.catalog / pkg / rest
                     if not file.is_file():
                         raise self._refuse(tag, uri, "no such file in the catalog")
@@ -158,14 +165,43 @@ class _Resolver:
         else:
             path = uri
         rel = self._confined(tag, uri, start, path)
-        file = self.root / rel
-        if not file.is_file():
+        if not (self.root / rel).is_file():
             raise self._refuse(tag, uri, f"{rel!r} is not a file of the archive")
+        return self._canonical(tag, uri, rel)
+
+    def _canonical(self, tag: str, uri: str, rel: str) -> tuple[str, Path]:
+        """``(FILES_PREFIX + rel, file)`` for the archive's file ``rel``; refuses a name
+        Pinocchio could not resolve."""
         canonical = FILES_PREFIX + rel
         why = check_resource_uri(canonical)
         if why is not None:
             raise self._refuse(tag, uri, f"the file name {rel!r} is not usable ({why})")
-        return canonical, file
+        return canonical, self.root / rel
+
+    def _own_copy(self, rest: str) -> str | None:
+        """The archive's own copy of the catalog file ``package://example-robot-data/<rest>``
+        (a path in the archive), or ``None`` (module doc, step 2).
+
+        ``rest`` is ``robots/<folder>/<path>`` for a catalog package folder: the copy is
+        ``robots/<folder>/<path>``, ``<folder>/<path>`` or ``<path>`` (longest first) under
+        the description's directory or one of its ancestors (nearest first), so that an
+        upload of the folder itself, of a folder holding it or of a copy of
+        example-robot-data is found. ``rest`` has plain segments (checked by the caller).
+        """
+        parts = rest.split("/")
+        tails = [rest]
+        if parts[0] == "robots" and len(parts) >= 3:
+            tails += ["/".join(parts[1:]), "/".join(parts[2:])]
+        anchor = self.base
+        while True:
+            for tail in tails:
+                rel = posixpath.join(anchor, tail)
+                file = self.root / rel
+                if file.is_file() and file.resolve().is_relative_to(self.real_root):
+                    return rel
+            if not anchor:
+                return None
+            anchor = posixpath.dirname(anchor)
 
     def _confined(self, tag: str, uri: str, start: str, path: str) -> str:
         """``start/path`` normalised, if it stays in the package (symlinks followed)."""
