@@ -195,3 +195,53 @@ def test_elision_matches_what_it_stands_for() -> None:
     ]
     assert mismatches(shown, {"l": [2, 5, 9], "v": 0, "s": "free at 2"}, 1e-9)
     assert mismatches(shown, {"l": [1], "v": 0, "s": "free at 2"}, 1e-9)
+
+
+SAMPLE = """# A page
+
+<!-- not run: a diagram -->
+```
+box
+```
+
+```sh
+curl -s http://127.0.0.1:8000/health
+```
+
+```json
+{"status": "ok"}
+```
+
+```sh
+curl -s http://localhost:8000/health
+```
+
+Prose between an example and a block: that block is no answer.
+
+```json
+{"status": "ok"}
+```
+
+<!-- not run: -->
+```sh
+make run
+```
+"""
+
+
+def test_blocks_that_neither_run_nor_answer_nor_are_marked_are_problems() -> None:
+    """The plan of a page: one example with its answer; a foreign address, a missing
+    answer, a json block after prose and a reasonless mark are each reported."""
+    found = plan("page.md", SAMPLE)
+    assert [(ex.block.line, ex.answer.line if ex.answer else None) for ex in found.examples] == [
+        (8, 12),
+        (16, None),
+    ]
+    assert [b.line for b in found.not_run] == [4, 27]
+    assert found.problems == [
+        "page.md:16: names ['localhost:8000'], not 127.0.0.1:8000",
+        "page.md:16: a sh example without its answer block",
+        "page.md:22: a ```json block that neither runs (sh, python), answers the example above "
+        "it, nor is marked <!-- not run: reason -->",
+        "page.md:27: 'not run' without a reason",
+    ]
