@@ -266,7 +266,10 @@ def check_answer(example: Example, stdout: str) -> list[str]:
         got = json.loads(stdout)
     except ValueError:
         return [f"{where}: the example answered no JSON: {stdout[:500]!r}"]
-    return [f"{where}: {m}" for m in mismatches(shown, got, tolerance(answer))]
+    found = [f"{where}: {m}" for m in mismatches(shown, got, tolerance(answer))]
+    if found:
+        found.append(f"{where}: the answer was {stdout[:1500]}")
+    return found
 
 
 def session_script(examples: list[Example], port: int, out_dir: Path) -> str:
