@@ -21,10 +21,14 @@ needs to handle what the service really sends:
   ``WWW-Authenticate`` on 401, ``Location`` on the 201 of robot writes and the 202 of a
   reachability build, ``Upgrade`` on 426, and the file headers of
   :mod:`app.api.untrusted` (:data:`OPERATION_HEADERS`).
-- **Security**: ``security: []`` on open operations; write operations (guarded by
-  :func:`app.api.security.require_token`) and the stream take an *optional* bearer token,
-  ``[{}, {bearerAuth: []}]``, as the token is only enforced when ``DENAVIT_API_TOKEN`` is
-  set (a generated client then accepts a plain client, token or not).
+- **Security**: the document's ``security`` is an *optional* bearer token,
+  ``[{}, {bearerAuth: []}]``, which the write operations (guarded by
+  :func:`app.api.security.require_token`) and the stream inherit: the token is only
+  enforced when ``DENAVIT_API_TOKEN`` is set. Every other operation says ``security: []``.
+  The write operations inherit it rather than repeat it because openapi-python-client
+  makes any operation with its own non-empty ``security`` take an ``AuthenticatedClient``
+  (a token); inherited, they accept a plain ``Client`` too, while Swagger UI and the other
+  generators still offer the token there.
 - ``servers`` (relative ``/`` first, so the docs page calls the server it is served by;
   then ``make run``'s address), ``info.license`` (the project's, from pyproject.toml) and
   the global ``tags`` list.
@@ -285,7 +289,10 @@ def complete(schema: dict[str, Any], table: RouteTable, guarded: set[str]) -> di
                 names = EVERY_RESPONSE + STATUS_HEADERS.get(code, ()) + own.get(code, ())
                 response["headers"] = _header_refs(names)
             op["responses"] = dict(sorted(responses.items()))
-            op["security"] = [{}, {BEARER: []}] if op.get("operationId") in guarded else []
+            if op.get("operationId") in guarded:
+                op.pop("security", None)  # inherits the document's optional bearer
+            else:
+                op["security"] = []
     components = schema.setdefault("components", {})
     components["headers"] = {name: dict(body) for name, body in HEADERS.items()}
     info = schema.setdefault("info", {})
@@ -293,6 +300,7 @@ def complete(schema: dict[str, Any], table: RouteTable, guarded: set[str]) -> di
     if STATUS_NOTES not in info.get("description", ""):
         info["description"] = info.get("description", "").rstrip("\n") + STATUS_NOTES
     schema["servers"] = [dict(s) for s in SERVERS]
+    schema["security"] = [{}, {BEARER: []}]
     used = [t for item in paths.values() for op in item.values() for t in op.get("tags", ())]
     schema["tags"] = [
         {"name": name, **({"description": TAGS[name]} if name in TAGS else {})}
