@@ -115,7 +115,7 @@ LINT_DIR   := tools/lint
 LINT_STAMP := $(LINT_DIR)/node_modules/.installed
 openapi-lint-tools: $(LINT_STAMP)
 $(LINT_STAMP): $(LINT_DIR)/package.json $(LINT_DIR)/package-lock.json
-	cd $(LINT_DIR) && npm ci --ignore-scripts --no-audit --no-fund
+	cd $(LINT_DIR) && npm ci --ignore-scripts --no-audit --no-fund --prefer-offline
 	touch $(LINT_STAMP)
 
 openapi-lint: install openapi-lint-tools
