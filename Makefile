@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install install-run run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean
+.PHONY: install install-run run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean openapi-lint-tools openapi-lint examples
 
 install: $(STAMP)
 
@@ -68,7 +68,7 @@ lint: install
 	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts
 	$(BIN)/hadolint Dockerfile
 
-test: install lint browser
+test: install lint browser openapi-lint-tools
 	$(BIN)/python -m pytest -n 2 tests
 
 # The browser tests (tests/browser) drive Debian's chromium through Playwright; Playwright's
@@ -114,6 +114,24 @@ bench: install
 # Regenerate the committed OpenAPI schema from the app (tests/test_openapi.py compares).
 openapi: install
 	$(BIN)/python -m app openapi docs/openapi.json
+
+# Record the document's examples again (after a model change; then `make openapi`):
+# scripts/record_examples.py runs the requests of tests/openapi_examples.py.
+examples: install
+	$(BIN)/python scripts/record_examples.py
+
+# The OpenAPI linters (@redocly/cli, @stoplight/spectral-cli) exactly as
+# tools/lint/package-lock.json pins them (no install scripts); tests/test_openapi_lint.py
+# runs them on docs/openapi.json offline, so `make test` fails on any lint error.
+LINT_DIR   := tools/lint
+LINT_STAMP := $(LINT_DIR)/node_modules/.installed
+openapi-lint-tools: $(LINT_STAMP)
+$(LINT_STAMP): $(LINT_DIR)/package.json $(LINT_DIR)/package-lock.json
+	cd $(LINT_DIR) && npm ci --ignore-scripts --no-audit --no-fund --prefer-offline
+	touch $(LINT_STAMP)
+
+openapi-lint: install openapi-lint-tools
+	$(BIN)/python -m pytest -o addopts= -q tests/test_openapi_lint.py
 
 clean:
 	rm -rf $(VENV) $(RUN_VENV) $(BENCH_VENV) .pytest_cache .ruff_cache

@@ -12,10 +12,12 @@ operation, whichever router defined it:
   ``DENAVIT_MAX_BODY_BYTES``) for operations with a body, 404 for operations with path
   parameters (unknown robot, scene, map...), 401 and 403 for write operations guarded by
   :func:`app.api.security.require_token`;
-- the bearer scheme is declared (``components.securitySchemes.bearerAuth``, HTTP bearer)
-  and exactly those guarded operations carry ``security: [{bearerAuth: []}]``, so generated
-  clients send the token there (the guard is enforced only when ``DENAVIT_API_TOKEN`` is
-  set; reads and computations stay open and declare no security).
+- the bearer scheme is declared (``components.securitySchemes.bearerAuth``, HTTP bearer).
+
+Then :func:`app.middleware.openapi_document.complete` adds the statuses the middleware
+answers on any operation, the response headers, ``security`` (optional bearer on exactly
+the guarded operations, ``[]`` on the others), ``servers``, the license and the tags, and
+:func:`app.middleware.openapi_examples.add_examples` the recorded examples.
 
 Schemathesis (tests/test_schemathesis.py) checks the responses against this schema.
 """
@@ -32,17 +34,19 @@ from pydantic import BaseModel
 from app.api.body import EXTRA_SCHEMAS
 from app.api.errors import Problem
 from app.api.security import require_token
+from app.middleware.methods import RouteTable
+from app.middleware.openapi_document import BEARER, complete
+from app.middleware.openapi_examples import add_examples
 
 PROBLEM = "application/problem+json"
 _REF = "#/components/schemas/"
-#: Name of the bearer scheme in ``components.securitySchemes``.
-BEARER = "bearerAuth"
 BEARER_SCHEME = {
     "type": "http",
     "scheme": "bearer",
     "description": "`Authorization: Bearer <token>` on write endpoints (robot import, "
-    "upload and deletion, scenes, reachability builds). Enforced only when the service "
-    "runs with DENAVIT_API_TOKEN set: 401 without a token, 403 with a wrong one.",
+    "upload and deletion, scenes, reachability builds) and the stream. Optional: enforced "
+    "only when the service runs with DENAVIT_API_TOKEN set (401 without a token, 403 with "
+    "a wrong one).",
 }
 
 GENERIC_ERRORS = {
@@ -99,7 +103,6 @@ def document_errors(
                 wanted.add("404")
             if op.get("operationId") in guarded:
                 wanted |= {"401", "403"}
-                op["security"] = [{BEARER: []}]
             for code in sorted(wanted):
                 responses.setdefault(code, {"description": GENERIC_ERRORS[code]})
             for code, response in responses.items():
@@ -137,7 +140,10 @@ def install(app: FastAPI) -> None:
 
     def openapi() -> dict[str, Any]:
         if app.openapi_schema is None:
-            app.openapi_schema = document_errors(generate(), guarded_operations(app), EXTRA_SCHEMAS)
+            guarded = guarded_operations(app)
+            schema = document_errors(generate(), guarded, EXTRA_SCHEMAS)
+            schema = complete(schema, RouteTable(app.routes), guarded)
+            app.openapi_schema = add_examples(schema)
         return app.openapi_schema
 
     app.openapi = openapi  # type: ignore[method-assign]
