@@ -16,10 +16,12 @@ install: $(STAMP)
 
 # Exactly the locked packages (hash-checked, no resolution), then the project itself,
 # editable, built with the locked setuptools. Re-installs when the lock changes.
-$(STAMP): pyproject.toml $(LOCK)
+$(STAMP): pyproject.toml $(LOCK) clients/python/pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --no-deps --require-hashes -r $(LOCK)
 	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation \
+		--config-settings editable_mode=compat -e ./clients/python
 	touch $(STAMP)
 
 # Re-resolve every transitive dependency from pyproject.toml (its == pins, the build
@@ -52,8 +54,8 @@ run: install
 	DENAVIT_HOST=$(HOST) DENAVIT_PORT=$(PORT) $(BIN)/python -m app
 
 lint: install
-	$(BIN)/ruff check app dh2urdf robots tests bench deploy scripts
-	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts
+	$(BIN)/ruff check app dh2urdf robots tests bench deploy scripts clients
+	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts clients
 	$(BIN)/hadolint Dockerfile
 
 test: install lint browser
