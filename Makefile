@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean
+.PHONY: install run test lint browser clients typescript viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean
 
 install: $(STAMP)
 
@@ -58,7 +58,7 @@ lint: install
 	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts clients
 	$(BIN)/hadolint Dockerfile
 
-test: install lint browser
+test: install lint browser typescript
 	$(BIN)/python -m pytest -n 2 tests
 
 # The browser tests (tests/browser) drive Debian's chromium through Playwright; Playwright's
@@ -101,9 +101,26 @@ bench: install
 	$(MAKE) bench-env || echo "bench: $(BENCH_VENV) could not be built; ik_LM rows skipped"
 	DENAVIT_BENCH_PYTHON=$(CURDIR)/$(BENCH_VENV)/bin/python $(BIN)/python -m bench
 
+# The TypeScript client's tools (openapi-typescript, openapi-fetch, tsc): exactly
+# clients/typescript/package-lock.json, by npm ci (Node from Debian: apt-get install nodejs npm).
+# tests/clients compiles its lab script with tsc --strict and checks its types for drift.
+TS_DIR   := clients/typescript
+TS_STAMP := $(TS_DIR)/node_modules/.installed
+typescript: $(TS_STAMP)
+$(TS_STAMP): $(TS_DIR)/package.json $(TS_DIR)/package-lock.json
+	cd $(TS_DIR) && npm ci --no-audit --no-fund --loglevel=error
+	touch $(TS_STAMP)
+
+# Regenerate the clients from the committed OpenAPI document (run after `make openapi`):
+# clients/python (clients/generate.py) and clients/typescript/src/schema.d.ts.
+clients: install typescript
+	$(BIN)/python clients/generate.py
+	cd $(TS_DIR) && node generate.mjs
+
 # Regenerate the committed OpenAPI schema from the app (tests/test_openapi.py compares).
 openapi: install
 	$(BIN)/python -m app openapi docs/openapi.json
 
 clean:
-	rm -rf $(VENV) $(BENCH_VENV) .pytest_cache .ruff_cache
+	rm -rf $(VENV) $(BENCH_VENV) .pytest_cache .ruff_cache .mypy_cache $(TS_DIR)/node_modules \
+		$(TS_DIR)/dist
