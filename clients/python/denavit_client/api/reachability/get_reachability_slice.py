@@ -1,5 +1,6 @@
 from http import HTTPStatus
-from typing import Any, cast
+from io import BytesIO
+from typing import Any
 from urllib.parse import quote
 
 import httpx
@@ -7,7 +8,7 @@ import httpx
 from ... import errors
 from ...client import AuthenticatedClient, Client
 from ...models.problem import Problem
-from ...types import UNSET, Response, Unset
+from ...types import UNSET, File, Response, Unset
 
 
 def _get_kwargs(
@@ -66,9 +67,10 @@ def _get_kwargs(
 
 def _parse_response(
     *, client: AuthenticatedClient | Client, response: httpx.Response
-) -> Any | Problem | None:
+) -> File | Problem | None:
     if response.status_code == 200:
-        response_200 = cast(Any, None)
+        response_200 = File(payload=BytesIO(response.content))
+
         return response_200
 
     if response.status_code == 400:
@@ -94,7 +96,7 @@ def _parse_response(
 
 def _build_response(
     *, client: AuthenticatedClient | Client, response: httpx.Response
-) -> Response[Any | Problem]:
+) -> Response[File | Problem]:
     return Response(
         status_code=HTTPStatus(response.status_code),
         content=response.content,
@@ -112,7 +114,7 @@ def sync_detailed(
     y: float | None | Unset = UNSET,
     z: float | None | Unset = UNSET,
     scale: int | None | Unset = UNSET,
-) -> Response[Any | Problem]:
+) -> Response[File | Problem]:
     """Get Reachability Slice
 
      Heat map of one voxel layer: colour = best manipulability over orientations (viridis,
@@ -131,7 +133,7 @@ def sync_detailed(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Response[Any | Problem]
+        Response[File | Problem]
     """
 
     kwargs = _get_kwargs(
@@ -159,7 +161,7 @@ def sync(
     y: float | None | Unset = UNSET,
     z: float | None | Unset = UNSET,
     scale: int | None | Unset = UNSET,
-) -> Any | Problem | None:
+) -> File | Problem | None:
     """Get Reachability Slice
 
      Heat map of one voxel layer: colour = best manipulability over orientations (viridis,
@@ -178,7 +180,7 @@ def sync(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Any | Problem
+        File | Problem
     """
 
     return sync_detailed(
@@ -201,7 +203,7 @@ async def asyncio_detailed(
     y: float | None | Unset = UNSET,
     z: float | None | Unset = UNSET,
     scale: int | None | Unset = UNSET,
-) -> Response[Any | Problem]:
+) -> Response[File | Problem]:
     """Get Reachability Slice
 
      Heat map of one voxel layer: colour = best manipulability over orientations (viridis,
@@ -220,7 +222,7 @@ async def asyncio_detailed(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Response[Any | Problem]
+        Response[File | Problem]
     """
 
     kwargs = _get_kwargs(
@@ -246,7 +248,7 @@ async def asyncio(
     y: float | None | Unset = UNSET,
     z: float | None | Unset = UNSET,
     scale: int | None | Unset = UNSET,
-) -> Any | Problem | None:
+) -> File | Problem | None:
     """Get Reachability Slice
 
      Heat map of one voxel layer: colour = best manipulability over orientations (viridis,
@@ -265,7 +267,7 @@ async def asyncio(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Any | Problem
+        File | Problem
     """
 
     return (
