@@ -75,18 +75,22 @@ def _run(cmd: list[str], cwd: Path) -> None:
         raise SystemExit(f"{' '.join(cmd)} failed:\n{done.stdout}{done.stderr}")
 
 
-def generate(out: Path) -> str:
+def generate(out: Path, document: dict[str, Any] | None = None) -> str:
     """Generate the package into ``out`` (a new directory); returns the generator's output.
 
     Parameters
     ----------
     out
         Directory to create, the package's own folder (``.../denavit_client``).
+    document
+        The OpenAPI document; by default docs/openapi.json.
     """
     bin_dir = Path(sys.executable).parent
+    if document is None:
+        document = json.loads(DOCUMENT.read_text())
     with tempfile.TemporaryDirectory() as tmp:
         spec = Path(tmp) / "openapi.json"
-        spec.write_text(json.dumps(generator_document(json.loads(DOCUMENT.read_text()))))
+        spec.write_text(json.dumps(generator_document(document)))
         done = subprocess.run(
             [
                 str(bin_dir / "openapi-python-client"),
