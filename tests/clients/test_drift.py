@@ -49,6 +49,7 @@ def test_the_python_client_is_generated_from_the_committed_document() -> None:
 
 
 def test_the_typescript_types_are_generated_from_the_committed_document(tmp_path) -> None:
+    assert (TS_DIR / "node_modules").is_dir(), "run `make typescript` (npm ci) first"
     out = tmp_path / "schema.d.ts"
     done = subprocess.run(
         ["node", "generate.mjs", str(out)], cwd=TS_DIR, capture_output=True, text=True

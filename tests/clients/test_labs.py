@@ -70,6 +70,7 @@ def test_the_python_lab_type_checks_under_mypy_strict() -> None:
 @pytest.fixture(scope="module")
 def tsc() -> subprocess.CompletedProcess[str]:
     """tsc --strict on the lab script, emitting dist/lab.js only when it type-checks."""
+    assert (TS_DIR / "node_modules").is_dir(), "run `make typescript` (npm ci) first"
     command = "node node_modules/typescript/bin/tsc -p tsconfig.json --strict --noEmitOnError"
     return subprocess.run(command.split(), cwd=TS_DIR, capture_output=True, text=True)
 
