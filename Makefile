@@ -10,16 +10,18 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install install-run run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean openapi-lint-tools openapi-lint examples
+.PHONY: install install-run run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean clients typescript openapi-lint-tools openapi-lint examples
 
 install: $(STAMP)
 
 # Exactly the locked packages (hash-checked, no resolution), then the project itself,
 # editable, built with the locked setuptools. Re-installs when the lock changes.
-$(STAMP): pyproject.toml $(LOCK)
+$(STAMP): pyproject.toml $(LOCK) clients/python/pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --no-deps --require-hashes -r $(LOCK)
 	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation \
+		--config-settings editable_mode=compat -e ./clients/python
 	touch $(STAMP)
 
 # Re-resolve every transitive dependency from pyproject.toml (its == pins, the build
@@ -64,11 +66,11 @@ run: install-run
 	DENAVIT_HOST=$(HOST) DENAVIT_PORT=$(PORT) $(RUN_VENV)/bin/python -m app
 
 lint: install
-	$(BIN)/ruff check app dh2urdf robots tests bench deploy scripts
-	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts
+	$(BIN)/ruff check app dh2urdf robots tests bench deploy scripts clients
+	$(BIN)/ruff format --check app dh2urdf robots tests bench deploy scripts clients
 	$(BIN)/hadolint Dockerfile
 
-test: install lint browser openapi-lint-tools
+test: install lint browser openapi-lint-tools typescript
 	$(BIN)/python -m pytest -n 2 tests
 
 # The browser tests (tests/browser) drive Debian's chromium through Playwright; Playwright's
@@ -111,6 +113,22 @@ bench: install
 	$(MAKE) bench-env || echo "bench: $(BENCH_VENV) could not be built; ik_LM rows skipped"
 	DENAVIT_BENCH_PYTHON=$(CURDIR)/$(BENCH_VENV)/bin/python $(BIN)/python -m bench
 
+# The TypeScript client's tools (openapi-typescript, openapi-fetch, tsc): exactly
+# clients/typescript/package-lock.json, by npm ci (Node from Debian: apt-get install nodejs npm).
+# tests/clients compiles its lab script with tsc --strict and checks its types for drift.
+TS_DIR   := clients/typescript
+TS_STAMP := $(TS_DIR)/node_modules/.installed
+typescript: $(TS_STAMP)
+$(TS_STAMP): $(TS_DIR)/package.json $(TS_DIR)/package-lock.json
+	cd $(TS_DIR) && npm ci --no-audit --no-fund --loglevel=error
+	touch $(TS_STAMP)
+
+# Regenerate the clients from the committed OpenAPI document (run after `make openapi`):
+# clients/python (clients/generate.py) and clients/typescript/src/schema.d.ts.
+clients: install typescript
+	$(BIN)/python clients/generate.py
+	cd $(TS_DIR) && node generate.mjs
+
 # Regenerate the committed OpenAPI schema from the app (tests/test_openapi.py compares).
 openapi: install
 	$(BIN)/python -m app openapi docs/openapi.json
@@ -134,4 +152,5 @@ openapi-lint: install openapi-lint-tools
 	$(BIN)/python -m pytest -o addopts= -q tests/test_openapi_lint.py
 
 clean:
-	rm -rf $(VENV) $(RUN_VENV) $(BENCH_VENV) .pytest_cache .ruff_cache
+	rm -rf $(VENV) $(RUN_VENV) $(BENCH_VENV) .pytest_cache .ruff_cache .mypy_cache \
+		$(TS_DIR)/node_modules $(TS_DIR)/dist $(LINT_DIR)/node_modules

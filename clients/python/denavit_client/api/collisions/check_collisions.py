@@ -1,0 +1,221 @@
+from http import HTTPStatus
+from typing import Any
+from urllib.parse import quote
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.collision_request import CollisionRequest
+from ...models.collision_response import CollisionResponse
+from ...models.problem import Problem
+from ...types import Response
+
+
+def _get_kwargs(
+    robot_id: str,
+    *,
+    body: CollisionRequest,
+) -> dict[str, Any]:
+    headers: dict[str, Any] = {}
+
+    _kwargs: dict[str, Any] = {
+        "method": "post",
+        "url": "/robots/{robot_id}/collisions".format(
+            robot_id=quote(str(robot_id), safe=""),
+        ),
+    }
+
+    _kwargs["json"] = body.to_dict()
+
+    headers["Content-Type"] = "application/json"
+
+    _kwargs["headers"] = headers
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> CollisionResponse | Problem | None:
+    if response.status_code == 200:
+        response_200 = CollisionResponse.from_dict(response.json())
+
+        return response_200
+
+    if response.status_code == 400:
+        response_400 = Problem.from_dict(response.json())
+
+        return response_400
+
+    if response.status_code == 404:
+        response_404 = Problem.from_dict(response.json())
+
+        return response_404
+
+    if response.status_code == 413:
+        response_413 = Problem.from_dict(response.json())
+
+        return response_413
+
+    if response.status_code == 422:
+        response_422 = Problem.from_dict(response.json())
+
+        return response_422
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[CollisionResponse | Problem]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: CollisionRequest,
+) -> Response[CollisionResponse | Problem]:
+    """Check Collisions
+
+     Self-collision and collision with obstacles at one configuration.
+
+    Obstacles come inline (``obstacles``) or from a stored ``scene``. Links fixed to the
+    world are not checked against obstacles; adjacent links and SRDF-disabled pairs are
+    never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (CollisionRequest): A configuration to check.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[CollisionResponse | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+        body=body,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: CollisionRequest,
+) -> CollisionResponse | Problem | None:
+    """Check Collisions
+
+     Self-collision and collision with obstacles at one configuration.
+
+    Obstacles come inline (``obstacles``) or from a stored ``scene``. Links fixed to the
+    world are not checked against obstacles; adjacent links and SRDF-disabled pairs are
+    never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (CollisionRequest): A configuration to check.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        CollisionResponse | Problem
+    """
+
+    return sync_detailed(
+        robot_id=robot_id,
+        client=client,
+        body=body,
+    ).parsed
+
+
+async def asyncio_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: CollisionRequest,
+) -> Response[CollisionResponse | Problem]:
+    """Check Collisions
+
+     Self-collision and collision with obstacles at one configuration.
+
+    Obstacles come inline (``obstacles``) or from a stored ``scene``. Links fixed to the
+    world are not checked against obstacles; adjacent links and SRDF-disabled pairs are
+    never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (CollisionRequest): A configuration to check.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[CollisionResponse | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+        body=body,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: CollisionRequest,
+) -> CollisionResponse | Problem | None:
+    """Check Collisions
+
+     Self-collision and collision with obstacles at one configuration.
+
+    Obstacles come inline (``obstacles``) or from a stored ``scene``. Links fixed to the
+    world are not checked against obstacles; adjacent links and SRDF-disabled pairs are
+    never checked (GET /robots/{robot_id}/collision_pairs lists the checked pairs).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (CollisionRequest): A configuration to check.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        CollisionResponse | Problem
+    """
+
+    return (
+        await asyncio_detailed(
+            robot_id=robot_id,
+            client=client,
+            body=body,
+        )
+    ).parsed

@@ -1,0 +1,221 @@
+from http import HTTPStatus
+from typing import Any
+from urllib.parse import quote
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.fk_batch_request import FKBatchRequest
+from ...models.fk_batch_response import FKBatchResponse
+from ...models.problem import Problem
+from ...types import Response
+
+
+def _get_kwargs(
+    robot_id: str,
+    *,
+    body: FKBatchRequest,
+) -> dict[str, Any]:
+    headers: dict[str, Any] = {}
+
+    _kwargs: dict[str, Any] = {
+        "method": "post",
+        "url": "/robots/{robot_id}/fk/batch".format(
+            robot_id=quote(str(robot_id), safe=""),
+        ),
+    }
+
+    _kwargs["json"] = body.to_dict()
+
+    headers["Content-Type"] = "application/json"
+
+    _kwargs["headers"] = headers
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> FKBatchResponse | Problem | None:
+    if response.status_code == 200:
+        response_200 = FKBatchResponse.from_dict(response.json())
+
+        return response_200
+
+    if response.status_code == 400:
+        response_400 = Problem.from_dict(response.json())
+
+        return response_400
+
+    if response.status_code == 404:
+        response_404 = Problem.from_dict(response.json())
+
+        return response_404
+
+    if response.status_code == 413:
+        response_413 = Problem.from_dict(response.json())
+
+        return response_413
+
+    if response.status_code == 422:
+        response_422 = Problem.from_dict(response.json())
+
+        return response_422
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[FKBatchResponse | Problem]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: FKBatchRequest,
+) -> Response[FKBatchResponse | Problem]:
+    """Compute Fk Batch
+
+     Position and orientation of one frame for many configurations.
+
+    The body (up to ``DENAVIT_MAX_BATCH`` configurations) is decoded and computed in the
+    work pool: decoding takes orjson and one NumPy conversion, and FK of serial chains is
+    vectorised (see ``app.kinematics.chain.SerialChain``).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (FKBatchRequest): Many configurations, one frame.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[FKBatchResponse | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+        body=body,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: FKBatchRequest,
+) -> FKBatchResponse | Problem | None:
+    """Compute Fk Batch
+
+     Position and orientation of one frame for many configurations.
+
+    The body (up to ``DENAVIT_MAX_BATCH`` configurations) is decoded and computed in the
+    work pool: decoding takes orjson and one NumPy conversion, and FK of serial chains is
+    vectorised (see ``app.kinematics.chain.SerialChain``).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (FKBatchRequest): Many configurations, one frame.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        FKBatchResponse | Problem
+    """
+
+    return sync_detailed(
+        robot_id=robot_id,
+        client=client,
+        body=body,
+    ).parsed
+
+
+async def asyncio_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: FKBatchRequest,
+) -> Response[FKBatchResponse | Problem]:
+    """Compute Fk Batch
+
+     Position and orientation of one frame for many configurations.
+
+    The body (up to ``DENAVIT_MAX_BATCH`` configurations) is decoded and computed in the
+    work pool: decoding takes orjson and one NumPy conversion, and FK of serial chains is
+    vectorised (see ``app.kinematics.chain.SerialChain``).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (FKBatchRequest): Many configurations, one frame.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[FKBatchResponse | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+        body=body,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    body: FKBatchRequest,
+) -> FKBatchResponse | Problem | None:
+    """Compute Fk Batch
+
+     Position and orientation of one frame for many configurations.
+
+    The body (up to ``DENAVIT_MAX_BATCH`` configurations) is decoded and computed in the
+    work pool: decoding takes orjson and one NumPy conversion, and FK of serial chains is
+    vectorised (see ``app.kinematics.chain.SerialChain``).
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (FKBatchRequest): Many configurations, one frame.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        FKBatchResponse | Problem
+    """
+
+    return (
+        await asyncio_detailed(
+            robot_id=robot_id,
+            client=client,
+            body=body,
+        )
+    ).parsed

@@ -1,0 +1,220 @@
+from http import HTTPStatus
+from typing import Any
+from urllib.parse import quote
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.build_request import BuildRequest
+from ...models.job_response import JobResponse
+from ...models.problem import Problem
+from ...types import Response
+
+
+def _get_kwargs(
+    robot_id: str,
+    *,
+    body: BuildRequest,
+) -> dict[str, Any]:
+    headers: dict[str, Any] = {}
+
+    _kwargs: dict[str, Any] = {
+        "method": "post",
+        "url": "/robots/{robot_id}/reachability".format(
+            robot_id=quote(str(robot_id), safe=""),
+        ),
+    }
+
+    _kwargs["json"] = body.to_dict()
+
+    headers["Content-Type"] = "application/json"
+
+    _kwargs["headers"] = headers
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> JobResponse | Problem | None:
+    if response.status_code == 202:
+        response_202 = JobResponse.from_dict(response.json())
+
+        return response_202
+
+    if response.status_code == 400:
+        response_400 = Problem.from_dict(response.json())
+
+        return response_400
+
+    if response.status_code == 401:
+        response_401 = Problem.from_dict(response.json())
+
+        return response_401
+
+    if response.status_code == 403:
+        response_403 = Problem.from_dict(response.json())
+
+        return response_403
+
+    if response.status_code == 404:
+        response_404 = Problem.from_dict(response.json())
+
+        return response_404
+
+    if response.status_code == 409:
+        response_409 = Problem.from_dict(response.json())
+
+        return response_409
+
+    if response.status_code == 413:
+        response_413 = Problem.from_dict(response.json())
+
+        return response_413
+
+    if response.status_code == 422:
+        response_422 = Problem.from_dict(response.json())
+
+        return response_422
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[JobResponse | Problem]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient,
+    body: BuildRequest,
+) -> Response[JobResponse | Problem]:
+    """Build Reachability Map
+
+     Start building a reachability map in the background; poll the returned job.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (BuildRequest): What to build: grid, orientation bins, manipulability rows, sampling.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[JobResponse | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+        body=body,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient,
+    body: BuildRequest,
+) -> JobResponse | Problem | None:
+    """Build Reachability Map
+
+     Start building a reachability map in the background; poll the returned job.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (BuildRequest): What to build: grid, orientation bins, manipulability rows, sampling.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        JobResponse | Problem
+    """
+
+    return sync_detailed(
+        robot_id=robot_id,
+        client=client,
+        body=body,
+    ).parsed
+
+
+async def asyncio_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient,
+    body: BuildRequest,
+) -> Response[JobResponse | Problem]:
+    """Build Reachability Map
+
+     Start building a reachability map in the background; poll the returned job.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (BuildRequest): What to build: grid, orientation bins, manipulability rows, sampling.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[JobResponse | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+        body=body,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient,
+    body: BuildRequest,
+) -> JobResponse | Problem | None:
+    """Build Reachability Map
+
+     Start building a reachability map in the background; poll the returned job.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+        body (BuildRequest): What to build: grid, orientation bins, manipulability rows, sampling.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        JobResponse | Problem
+    """
+
+    return (
+        await asyncio_detailed(
+            robot_id=robot_id,
+            client=client,
+            body=body,
+        )
+    ).parsed

@@ -1,0 +1,174 @@
+from http import HTTPStatus
+from typing import Any
+from urllib.parse import quote
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.map_list import MapList
+from ...models.problem import Problem
+from ...types import Response
+
+
+def _get_kwargs(
+    robot_id: str,
+) -> dict[str, Any]:
+
+    _kwargs: dict[str, Any] = {
+        "method": "get",
+        "url": "/robots/{robot_id}/reachability/maps".format(
+            robot_id=quote(str(robot_id), safe=""),
+        ),
+    }
+
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> MapList | Problem | None:
+    if response.status_code == 200:
+        response_200 = MapList.from_dict(response.json())
+
+        return response_200
+
+    if response.status_code == 404:
+        response_404 = Problem.from_dict(response.json())
+
+        return response_404
+
+    if response.status_code == 422:
+        response_422 = Problem.from_dict(response.json())
+
+        return response_422
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[MapList | Problem]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> Response[MapList | Problem]:
+    """List Reachability Maps
+
+     Stored maps of this robot, oldest first.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[MapList | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> MapList | Problem | None:
+    """List Reachability Maps
+
+     Stored maps of this robot, oldest first.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        MapList | Problem
+    """
+
+    return sync_detailed(
+        robot_id=robot_id,
+        client=client,
+    ).parsed
+
+
+async def asyncio_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> Response[MapList | Problem]:
+    """List Reachability Maps
+
+     Stored maps of this robot, oldest first.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[MapList | Problem]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> MapList | Problem | None:
+    """List Reachability Maps
+
+     Stored maps of this robot, oldest first.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        MapList | Problem
+    """
+
+    return (
+        await asyncio_detailed(
+            robot_id=robot_id,
+            client=client,
+        )
+    ).parsed

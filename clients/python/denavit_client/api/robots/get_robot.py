@@ -1,0 +1,198 @@
+from http import HTTPStatus
+from typing import Any
+from urllib.parse import quote
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.problem import Problem
+from ...models.robot_detail import RobotDetail
+from ...types import Response
+
+
+def _get_kwargs(
+    robot_id: str,
+) -> dict[str, Any]:
+
+    _kwargs: dict[str, Any] = {
+        "method": "get",
+        "url": "/robots/{robot_id}".format(
+            robot_id=quote(str(robot_id), safe=""),
+        ),
+    }
+
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Problem | RobotDetail | None:
+    if response.status_code == 200:
+        response_200 = RobotDetail.from_dict(response.json())
+
+        return response_200
+
+    if response.status_code == 404:
+        response_404 = Problem.from_dict(response.json())
+
+        return response_404
+
+    if response.status_code == 422:
+        response_422 = Problem.from_dict(response.json())
+
+        return response_422
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[Problem | RobotDetail]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> Response[Problem | RobotDetail]:
+    """Get Robot
+
+     Describe a robot: joints in order, frames, default end effector, neutral configuration.
+
+    ``files`` tells a viewer where the meshes are: a mesh URI of GET /robots/{robot_id}/urdf
+    that starts with ``files.uri_prefix`` is served at ``files.url`` + the rest of the URI
+    (``package://files/meshes/a.stl`` → ``/robots/{robot_id}/files/meshes/a.stl``).
+
+    Runs in the thread pool: the first request for a robot parses its URDF.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[Problem | RobotDetail]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> Problem | RobotDetail | None:
+    """Get Robot
+
+     Describe a robot: joints in order, frames, default end effector, neutral configuration.
+
+    ``files`` tells a viewer where the meshes are: a mesh URI of GET /robots/{robot_id}/urdf
+    that starts with ``files.uri_prefix`` is served at ``files.url`` + the rest of the URI
+    (``package://files/meshes/a.stl`` → ``/robots/{robot_id}/files/meshes/a.stl``).
+
+    Runs in the thread pool: the first request for a robot parses its URDF.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Problem | RobotDetail
+    """
+
+    return sync_detailed(
+        robot_id=robot_id,
+        client=client,
+    ).parsed
+
+
+async def asyncio_detailed(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> Response[Problem | RobotDetail]:
+    """Get Robot
+
+     Describe a robot: joints in order, frames, default end effector, neutral configuration.
+
+    ``files`` tells a viewer where the meshes are: a mesh URI of GET /robots/{robot_id}/urdf
+    that starts with ``files.uri_prefix`` is served at ``files.url`` + the rest of the URI
+    (``package://files/meshes/a.stl`` → ``/robots/{robot_id}/files/meshes/a.stl``).
+
+    Runs in the thread pool: the first request for a robot parses its URDF.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[Problem | RobotDetail]
+    """
+
+    kwargs = _get_kwargs(
+        robot_id=robot_id,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    robot_id: str,
+    *,
+    client: AuthenticatedClient | Client,
+) -> Problem | RobotDetail | None:
+    """Get Robot
+
+     Describe a robot: joints in order, frames, default end effector, neutral configuration.
+
+    ``files`` tells a viewer where the meshes are: a mesh URI of GET /robots/{robot_id}/urdf
+    that starts with ``files.uri_prefix`` is served at ``files.url`` + the rest of the URI
+    (``package://files/meshes/a.stl`` → ``/robots/{robot_id}/files/meshes/a.stl``).
+
+    Runs in the thread pool: the first request for a robot parses its URDF.
+
+    Args:
+        robot_id (str): Robot id, as listed by GET /robots.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Problem | RobotDetail
+    """
+
+    return (
+        await asyncio_detailed(
+            robot_id=robot_id,
+            client=client,
+        )
+    ).parsed
