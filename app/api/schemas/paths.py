@@ -60,7 +60,8 @@ class PathRequest(IKTaskIn):
         None,
         min_length=1,
         max_length=10_000,
-        description="Poses to pass through, joined by straight lines (instead of segments).",
+        description="Poses to pass through, joined by straight lines (instead of segments); "
+        "each a Pose as the `target` of /ik (an FK pose as is; redundant fields must agree).",
     )
     segments: list[Segment] | None = Field(
         None,
