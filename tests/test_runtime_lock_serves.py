@@ -21,8 +21,8 @@ from pathlib import Path
 import httpx
 
 from tests.helpers import serve
+from tests.locks import DEV, RUNTIME, canonical, parse_lock
 from tests.packages import zip_bytes
-from tests.test_lock import DEV, RUNTIME, canonical, parse_lock
 
 BLOCKER = '''"""Test-only: make the development-only packages unimportable (see its test)."""
 import importlib.abc
