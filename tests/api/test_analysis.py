@@ -113,6 +113,8 @@ def test_statics_planar_residual(planar_client):
     [
         ("manipulability", {"q": Q_UR5, "part": "full", "rows": ["vx"]}, 422, "rows"),
         ("manipulability", {"q": Q_UR5, "rows": ["vx", "vx"]}, 422, "rows.1"),
+        ("manipulability", {"q": Q_UR5, "rows": [False]}, 422, "rows.0"),
+        ("manipulability", {"q": Q_UR5, "rows": ["vx", True]}, 422, "rows.1"),
         ("manipulability", {"q": Q_UR5, "rows": ["speed"]}, 422, "rows.0"),
         ("manipulability", {"q": Q_UR5, "rows": [9]}, 422, "rows.0"),
         ("manipulability", {"q": Q_UR5, "rows": []}, 422, "rows"),

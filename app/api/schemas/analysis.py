@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, BeforeValidator, Field
 
 from app.api.schemas.common import (
     Configuration,
@@ -29,7 +29,20 @@ ROWS_DOC = (
     "for a planar arm in the x-y plane. Give either part or rows."
 )
 TOL_DOC = "Relative rank tolerance: σ_i counts toward the rank when σ_i > relative_tolerance·σ_max."
-Row = Annotated[str | int, Field(description="Row name (vx … wz) or index 0–5.")]
+
+
+def _not_bool(value: object) -> object:
+    # JSON true/false would otherwise be coerced to rows 1/0
+    if isinstance(value, bool):
+        raise ValueError("a row is a name (vx … wz) or an index 0–5, not a boolean")
+    return value
+
+
+Row = Annotated[
+    str | int,
+    BeforeValidator(_not_bool),
+    Field(description="Row name (vx … wz) or index 0–5."),
+]
 #: A force, moment or joint torque: finite and at most 10¹² in magnitude (N, N·m).
 Load = Annotated[Finite, Field(ge=-1e12, le=1e12)]
 
