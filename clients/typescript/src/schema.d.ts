@@ -184,14 +184,16 @@ export interface paths {
          *     ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES`` once unpacked (counted while decompressing).
          *     Mesh and texture references resolve inside the package: relative paths and
          *     ``file://<relative path>`` against the description's folder, ``package://<pkg>/…``
-         *     against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of
-         *     the archive); ``package://example-robot-data/…`` names the catalog's files. A
-         *     reference that leaves the package, an absolute path, another scheme or a missing file
-         *     is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that
-         *     cannot be read is a 422 naming it, so a 201 means collisions work. The stored URDF
-         *     (GET /robots/{robot_id}/urdf) names every file ``package://files/<path in the
-         *     archive>``, served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF
-         *     is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
+         *     against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of the
+         *     archive); ``package://example-robot-data/robots/<folder>/<path>`` names the archive's
+         *     own copy when it has one (``<path>``, ``<folder>/<path>`` or ``robots/<folder>/<path>``
+         *     under the description's folder or its nearest parent with one), else the catalog's file.
+         *     A reference that leaves the package, an absolute path, another scheme or a missing file
+         *     is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that cannot
+         *     be read is a 422 naming it, so a 201 means collisions work. The stored URDF (GET
+         *     /robots/{robot_id}/urdf) names every file ``package://files/<path in the archive>``,
+         *     served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF is checked
+         *     as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
          *     form); 409 if the id is taken. Nothing is stored on any refusal.
          */
         post: operations["upload_robot_package"];
@@ -793,10 +795,32 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/robots/{robot_id}/stream": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Robot stream (WebSocket)
+         * @description FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first message is `{"token": ...}`).
+         */
+        get: operations["get_robot_stream"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
 }
 export type webhooks = Record<string, never>;
 export interface components {
     schemas: {
+        /** @enum {string} */
+        AngleUnit: "rad" | "deg";
         /**
          * ArcSegment
          * @description A circular arc from the previous pose through `via` to `to`; orientation by slerp to
@@ -808,8 +832,8 @@ export interface components {
              * @enum {string}
              */
             type: "arc";
-            via: components["schemas"]["Target"];
-            to: components["schemas"]["Target"];
+            via: components["schemas"]["Pose"];
+            to: components["schemas"]["Pose"];
         };
         /**
          * Bounds
@@ -834,16 +858,15 @@ export interface components {
         BuildRequest: {
             /**
              * Frame
-             * @description Frame; default the end effector.
+             * @description Frame whose poses are mapped; default the robot's end effector.
              */
             frame?: string | null;
             /**
              * Voxel Size
-             * @description Edge of a position voxel (m).
-             * @default 0.05
+             * @description Edge of a position voxel (m). Default: the box's longest edge / 24 (with the default box, the chain's total length / 12: a coarse map of any arm), larger by steps of 5 % when voxels × orientation bins would exceed 16,777,216 cells.
              */
-            voxel_size?: number;
-            /** @description Box to cover; default a box that contains every reachable position (centred on the chain's first joint, half-size the chain's total length). */
+            voxel_size?: number | null;
+            /** @description Box to cover (m, root frame); default a box that contains every reachable position (centred on the chain's first joint, half-size the chain's total length). */
             bounds?: components["schemas"]["Bounds"] | null;
             /**
              * Orientation Divisions
@@ -851,11 +874,8 @@ export interface components {
              * @default 4
              */
             orientation_divisions?: number;
-            /**
-             * Part
-             * @description Manipulability rows: full (default) | translation | rotation.
-             */
-            part?: ("full" | "translation" | "rotation") | null;
+            /** @description Manipulability rows: full (default) | translation | rotation. */
+            part?: components["schemas"]["JacobianPart"] | null;
             /**
              * Rows
              * @description Explicit manipulability rows, e.g. ["vx", "vy"].
@@ -863,17 +883,15 @@ export interface components {
             rows?: (string | number)[] | null;
             /**
              * Samples
-             * @description Joint-space samples (grid: rounded).
+             * @description Joint-space samples (grid: rounded); the default builds in well under a second on a 7-joint arm.
              * @default 200000
              */
             samples?: number;
             /**
-             * Sampling
              * @description random: uniform within joint limits | grid: g = round(samples^(1/k)) values per joint.
              * @default random
-             * @enum {string}
              */
-            sampling?: "random" | "grid";
+            sampling?: components["schemas"]["ReachabilitySampling"];
             /**
              * Seed
              * @description Seed of the random samples.
@@ -881,12 +899,10 @@ export interface components {
              */
             seed?: number;
             /**
-             * Self Collision
              * @description Drop self-colliding samples using the collision module's geometry (mesh or convex hulls); one collision query per sample, far slower.
              * @default ignore
-             * @enum {string}
              */
-            self_collision?: "ignore" | "mesh" | "convex";
+            self_collision?: components["schemas"]["SelfCollisionMode"];
         };
         /**
          * CollisionBatchRequest
@@ -916,12 +932,10 @@ export interface components {
              */
             distances?: boolean;
             /**
-             * Geometry
              * @description mesh: the URDF collision meshes (exact); convex: their convex hulls (faster, conservative, signed distances).
              * @default mesh
-             * @enum {string}
              */
-            geometry?: "mesh" | "convex";
+            geometry?: components["schemas"]["CollisionGeometry"];
             /**
              * Configurations
              * @description N configurations, each one value per joint in joint order (rad, m); with `group`, rows of the group's joints only are accepted too (others neutral).
@@ -940,8 +954,7 @@ export interface components {
         CollisionBatchResponse: {
             /** Robot Id */
             robot_id: string;
-            /** Geometry */
-            geometry: string;
+            geometry: components["schemas"]["CollisionGeometry"];
             /** Margin */
             margin: number;
             /** Count */
@@ -970,6 +983,10 @@ export interface components {
              */
             min_distance?: number[] | null;
         };
+        /** @enum {string} */
+        CollisionGeometry: "mesh" | "convex";
+        /** @enum {string} */
+        CollisionPairKind: "self" | "environment";
         /**
          * CollisionPairsResponse
          * @description Which self-collision pairs are checked.
@@ -1021,24 +1038,14 @@ export interface components {
              */
             distances?: boolean;
             /**
-             * Geometry
              * @description mesh: the URDF collision meshes (exact); convex: their convex hulls (faster, conservative, signed distances).
              * @default mesh
-             * @enum {string}
              */
-            geometry?: "mesh" | "convex";
-            /**
-             * Q
-             * @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too.
-             */
-            q?: number[] | null;
-            /**
-             * Joint Positions
-             * @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
-             */
-            joint_positions?: {
-                [key: string]: number;
-            } | null;
+            geometry?: components["schemas"]["CollisionGeometry"];
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -1052,13 +1059,9 @@ export interface components {
         CollisionResponse: {
             /** Robot Id */
             robot_id: string;
-            /**
-             * Q
-             * @description The configuration checked, in joint order.
-             */
-            q: number[];
-            /** Geometry */
-            geometry: string;
+            /** @description The configuration checked, in joint order. */
+            q: components["schemas"]["Configuration"];
+            geometry: components["schemas"]["CollisionGeometry"];
             /** Margin */
             margin: number;
             /**
@@ -1092,6 +1095,10 @@ export interface components {
              */
             checked_pairs: number;
         };
+        /** @description One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous joints, m for prismatic ones. */
+        Configuration: number[];
+        /** @enum {string} */
+        DHConvention: "standard" | "modified";
         /**
          * DHGeometryDoc
          * @description Generated capsule geometry.
@@ -1104,6 +1111,8 @@ export interface components {
              */
             radius?: number | null;
         };
+        /** @enum {string} */
+        DHJointType: "revolute" | "prismatic" | "continuous";
         /**
          * DHRowDoc
          * @description One row: joint i's DH parameters.
@@ -1115,11 +1124,10 @@ export interface components {
              */
             name?: string | null;
             /**
-             * Type
              * @description Joint kind (null: revolute).
              * @default revolute
              */
-            type?: ("revolute" | "prismatic" | "continuous") | null;
+            type?: components["schemas"]["DHJointType"] | null;
             /**
              * A
              * @description Link length (a_i; a_{i-1} in the modified convention).
@@ -1181,11 +1189,7 @@ export interface components {
              * @default
              */
             description?: string | null;
-            /**
-             * Convention
-             * @enum {string}
-             */
-            convention: "standard" | "modified";
+            convention: components["schemas"]["DHConvention"];
             units?: components["schemas"]["DHUnitsDoc"] | null;
             /** @description World → DH frame 0. */
             base?: components["schemas"]["DHTransformDoc"] | null;
@@ -1225,19 +1229,15 @@ export interface components {
          */
         DHUnitsDoc: {
             /**
-             * Length
              * @description Unit of a, d, xyz, limits.
              * @default m
-             * @enum {string}
              */
-            length?: "m" | "cm" | "mm";
+            length?: components["schemas"]["LengthUnit"];
             /**
-             * Angle
              * @description Unit of alpha, theta, rpy, limits.
              * @default rad
-             * @enum {string}
              */
-            angle?: "rad" | "deg";
+            angle?: components["schemas"]["AngleUnit"];
         };
         /**
          * Ellipsoid
@@ -1294,18 +1294,10 @@ export interface components {
          * @description Configuration and the frames to place.
          */
         FKRequest: {
-            /**
-             * Q
-             * @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too.
-             */
-            q?: number[] | null;
-            /**
-             * Joint Positions
-             * @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
-             */
-            joint_positions?: {
-                [key: string]: number;
-            } | null;
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -1324,11 +1316,8 @@ export interface components {
         FKResponse: {
             /** Robot Id */
             robot_id: string;
-            /**
-             * Q
-             * @description The configuration used, in joint order.
-             */
-            q: number[];
+            /** @description The configuration used, in joint order. */
+            q: components["schemas"]["Configuration"];
             /**
              * Poses
              * @description Frame name → pose in the root frame.
@@ -1417,13 +1406,8 @@ export interface components {
         IKBatchItem: {
             /** Success */
             success: boolean;
-            /**
-             * Status
-             * @enum {string}
-             */
-            status: "converged" | "not_converged" | "timeout";
-            /** Q */
-            q: number[];
+            status: components["schemas"]["IKStatus"];
+            q: components["schemas"]["Configuration"];
             /** Position Error */
             position_error: number;
             /** Orientation Error */
@@ -1434,11 +1418,8 @@ export interface components {
             restarts: number;
             /** Solve Time Ms */
             solve_time_ms: number;
-            /**
-             * Reason
-             * @description Why no solution was found (null on success): unreachable (the target position is beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the limits, or the best configuration is pinned at a limit) | collision (every solution found collides) | singular (the search stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search). See docs/ik.md.
-             */
-            reason: ("unreachable" | "joint_limits" | "collision" | "singular" | "timeout") | null;
+            /** @description Why no solution was found (null on success): unreachable (the target position is beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the limits, or the best configuration is pinned at a limit) | collision (every solution found collides) | singular (the search stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search). See docs/ik.md. */
+            reason: components["schemas"]["IKReason"] | null;
             /**
              * Detail
              * @description The reason in a sentence, with numbers.
@@ -1461,12 +1442,10 @@ export interface components {
              */
             group?: string | null;
             /**
-             * Mode
              * @description pose (default): full 6-D pose | position: the frame origin only, orientation free (3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only.
              * @default pose
-             * @enum {string}
              */
-            mode?: "pose" | "position" | "orientation";
+            mode?: components["schemas"]["IKMode"];
             /**
              * Weights
              * @description Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); 0 frees a component (not checked against the tolerance).
@@ -1507,12 +1486,10 @@ export interface components {
              */
             margin?: number;
             /**
-             * Collision Geometry
              * @description With avoid_collisions: meshes, or their convex hulls (faster).
              * @default mesh
-             * @enum {string}
              */
-            collision_geometry?: "mesh" | "convex";
+            collision_geometry?: components["schemas"]["CollisionGeometry"];
             /**
              * Random Seed
              * @description Seed of the random restarts: the same request gives the same answer, bit for bit, on any worker (unless the time budget ends the search: give max_iterations for a budget that does not depend on the machine's speed). Default: a fixed table of restarts, also reproducible.
@@ -1522,14 +1499,12 @@ export interface components {
              * Seed
              * @description Start configuration: one value per joint (joint order; with `group`, one per joint of the group is accepted too), joint → value (others: middle of their limits), or the name of a named state of the SRDF (e.g. "ready"; GET /robots/{id} lists them). Default: the middle of the joint limits. Values within ±10000 (rad or m), as every configuration. IK answers always hold every joint.
              */
-            seed?: number[] | {
-                [key: string]: number;
-            } | string | null;
+            seed?: number[] | components["schemas"]["JointPositions"] | string | null;
             /**
              * Targets
-             * @description Targets, solved in order.
+             * @description Targets, solved in order. Each as `target` of /ik.
              */
-            targets: components["schemas"]["Target"][];
+            targets: components["schemas"]["Pose"][];
             /**
              * Chain Seeds
              * @description Seed each target with the previous solution (trajectories); false: every target starts from `seed`, the targets are solved independently (spread over the server's batch worker processes), and with random_seed target i draws its restarts from its own generator, child i of SeedSequence(random_seed), so answers do not depend on how the batch is split.
@@ -1546,8 +1521,7 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Mode */
-            mode: string;
+            mode: components["schemas"]["IKMode"];
             /** Joint Names */
             joint_names: string[];
             /**
@@ -1565,6 +1539,12 @@ export interface components {
              */
             solver_version: string;
         };
+        /** @enum {string} */
+        IKMode: "pose" | "position" | "orientation";
+        /** @enum {string} */
+        IKRankBy: "seed_distance" | "manipulability" | "clearance";
+        /** @enum {string} */
+        IKReason: "unreachable" | "joint_limits" | "collision" | "singular" | "timeout";
         /**
          * IKRequest
          * @description One IK query.
@@ -1581,12 +1561,10 @@ export interface components {
              */
             group?: string | null;
             /**
-             * Mode
              * @description pose (default): full 6-D pose | position: the frame origin only, orientation free (3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only.
              * @default pose
-             * @enum {string}
              */
-            mode?: "pose" | "position" | "orientation";
+            mode?: components["schemas"]["IKMode"];
             /**
              * Weights
              * @description Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); 0 frees a component (not checked against the tolerance).
@@ -1627,12 +1605,10 @@ export interface components {
              */
             margin?: number;
             /**
-             * Collision Geometry
              * @description With avoid_collisions: meshes, or their convex hulls (faster).
              * @default mesh
-             * @enum {string}
              */
-            collision_geometry?: "mesh" | "convex";
+            collision_geometry?: components["schemas"]["CollisionGeometry"];
             /**
              * Random Seed
              * @description Seed of the random restarts: the same request gives the same answer, bit for bit, on any worker (unless the time budget ends the search: give max_iterations for a budget that does not depend on the machine's speed). Default: a fixed table of restarts, also reproducible.
@@ -1642,10 +1618,9 @@ export interface components {
              * Seed
              * @description Start configuration: one value per joint (joint order; with `group`, one per joint of the group is accepted too), joint → value (others: middle of their limits), or the name of a named state of the SRDF (e.g. "ready"; GET /robots/{id} lists them). Default: the middle of the joint limits. Values within ±10000 (rad or m), as every configuration. IK answers always hold every joint.
              */
-            seed?: number[] | {
-                [key: string]: number;
-            } | string | null;
-            target: components["schemas"]["Target"];
+            seed?: number[] | components["schemas"]["JointPositions"] | string | null;
+            /** @description Desired placement of the frame in the root (world) frame; a pose an answer returns (e.g. FK's) is accepted as is. Mode pose needs a position (`position` or `matrix`) and a rotation (`orientation`, `rpy` or `matrix`); mode position a position; mode orientation a rotation. Redundant fields must agree within 1e-9. */
+            target: components["schemas"]["Pose"];
             /**
              * Num Solutions
              * @description Distinct solutions wanted: one per branch (shoulder/elbow/wrist flags where the arm has them, else clusters in joint space; see docs/ik.md).
@@ -1653,12 +1628,10 @@ export interface components {
              */
             num_solutions?: number;
             /**
-             * Rank By
              * @description Order of the solutions: seed_distance (smallest largest-joint move first) | manipulability (largest Yoshikawa measure first) | clearance (largest distance to the obstacles first; needs avoid_collisions with obstacles or a scene).
              * @default seed_distance
-             * @enum {string}
              */
-            rank_by?: "seed_distance" | "manipulability" | "clearance";
+            rank_by?: components["schemas"]["IKRankBy"];
         };
         /**
          * IKResponse
@@ -1669,24 +1642,13 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Mode */
-            mode: string;
+            mode: components["schemas"]["IKMode"];
             /** Success */
             success: boolean;
-            /**
-             * Status
-             * @enum {string}
-             */
-            status: "converged" | "not_converged" | "timeout";
-            /**
-             * Q
-             * @description Best configuration (first solution, or lowest error).
-             */
-            q: number[];
-            /** Joint Positions */
-            joint_positions: {
-                [key: string]: number;
-            };
+            status: components["schemas"]["IKStatus"];
+            /** @description Best configuration (first solution, or lowest error). */
+            q: components["schemas"]["Configuration"];
+            joint_positions: components["schemas"]["JointPositions"];
             /**
              * Position Error
              * @description Of q: ‖p − p_t‖ (m).
@@ -1713,11 +1675,8 @@ export interface components {
              * @description analytic | numeric | analytic+numeric
              */
             method: string;
-            /**
-             * Reason
-             * @description Why no solution was found (null on success): unreachable (the target position is beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the limits, or the best configuration is pinned at a limit) | collision (every solution found collides) | singular (the search stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search). See docs/ik.md.
-             */
-            reason: ("unreachable" | "joint_limits" | "collision" | "singular" | "timeout") | null;
+            /** @description Why no solution was found (null on success): unreachable (the target position is beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the limits, or the best configuration is pinned at a limit) | collision (every solution found collides) | singular (the search stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search). See docs/ik.md. */
+            reason: components["schemas"]["IKReason"] | null;
             /**
              * Detail
              * @description The reason in a sentence, with numbers.
@@ -1734,15 +1693,9 @@ export interface components {
          * @description A verified solution.
          */
         IKSolutionOut: {
-            /**
-             * Q
-             * @description Configuration in joint order (rad, m).
-             */
-            q: number[];
-            /** Joint Positions */
-            joint_positions: {
-                [key: string]: number;
-            };
+            /** @description Configuration in joint order (rad, m). */
+            q: components["schemas"]["Configuration"];
+            joint_positions: components["schemas"]["JointPositions"];
             /**
              * Position Error
              * @description ‖p − p_t‖ (m), by forward kinematics.
@@ -1774,23 +1727,21 @@ export interface components {
              */
             clearance: number | null;
         };
+        /** @enum {string} */
+        IKStatus: "converged" | "not_converged" | "timeout";
+        /** @enum {string} */
+        JacobianPart: "full" | "translation" | "rotation";
+        /** @enum {string} */
+        JacobianReference: "world" | "local" | "world_spatial";
         /**
          * JacobianRequest
          * @description Configuration, frame and reference.
          */
         JacobianRequest: {
-            /**
-             * Q
-             * @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too.
-             */
-            q?: number[] | null;
-            /**
-             * Joint Positions
-             * @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
-             */
-            joint_positions?: {
-                [key: string]: number;
-            } | null;
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -1802,12 +1753,10 @@ export interface components {
              */
             frame?: string | null;
             /**
-             * Reference
              * @description world (default): origin velocity and angular velocity in world axes (Pinocchio LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's own axes (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD).
              * @default world
-             * @enum {string}
              */
-            reference?: "world" | "local" | "world_spatial";
+            reference?: components["schemas"]["JacobianReference"];
         };
         /**
          * JacobianResponse
@@ -1819,10 +1768,8 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Reference */
-            reference: string;
-            /** Q */
-            q: number[];
+            reference: components["schemas"]["JacobianReference"];
+            q: components["schemas"]["Configuration"];
             /**
              * Jacobian
              * @description 6×n (with `group`: 6×k, k the group's joints); linear rows in m/rad or m/m.
@@ -1850,11 +1797,7 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /**
-             * Status
-             * @enum {string}
-             */
-            status: "queued" | "running" | "done" | "failed" | "cancelled";
+            status: components["schemas"]["JobStatus"];
             /**
              * Map Id
              * @description The stored map, once done.
@@ -1864,6 +1807,8 @@ export interface components {
             error: string | null;
             progress: components["schemas"]["ProgressOut"];
         };
+        /** @enum {string} */
+        JobStatus: "queued" | "running" | "done" | "failed" | "cancelled";
         /**
          * JointLimits
          * @description Joint limits, SI units; ``null`` where the URDF gives none (continuous joints).
@@ -1924,6 +1869,12 @@ export interface components {
              */
             continuous: boolean;
         };
+        /** @description Joint name → value: rad for revolute and continuous joints, m for prismatic ones, each within ±10000 (a value beyond is a 422 naming `<field>.<joint>`). */
+        JointPositions: {
+            [key: string]: number;
+        };
+        /** @enum {string} */
+        LengthUnit: "m" | "cm" | "mm";
         /**
          * LineSegment
          * @description A straight line from the previous pose to `to` (orientation by slerp).
@@ -1934,7 +1885,7 @@ export interface components {
              * @enum {string}
              */
             type: "line";
-            to: components["schemas"]["Target"];
+            to: components["schemas"]["Pose"];
         };
         /**
          * ManipulabilityBatchResponse
@@ -1945,8 +1896,7 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Reference */
-            reference: string;
+            reference: components["schemas"]["JacobianReference"];
             /** Rows */
             rows: string[];
             /** Joints */
@@ -1981,41 +1931,28 @@ export interface components {
              * @description Frame; default the end effector (with `group`: the group's tip).
              */
             frame?: string | null;
-            /**
-             * Part
-             * @description Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) | rotation (wx wy wz). Give either part or rows.
-             */
-            part?: ("full" | "translation" | "rotation") | null;
+            /** @description Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) | rotation (wx wy wz). Give either part or rows. */
+            part?: components["schemas"]["JacobianPart"] | null;
             /**
              * Rows
              * @description Explicit task rows by name (vx, vy, vz, wx, wy, wz) or index 0–5, e.g. ["vx", "vy"] for a planar arm in the x-y plane. Give either part or rows.
              */
             rows?: (string | number)[] | null;
             /**
-             * Reference
              * @description world (default): origin velocity and angular velocity in world axes (Pinocchio LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's own axes (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD).
              * @default world
-             * @enum {string}
              */
-            reference?: "world" | "local" | "world_spatial";
+            reference?: components["schemas"]["JacobianReference"];
             /**
              * Relative Tolerance
              * @description Relative rank tolerance: σ_i counts toward the rank when σ_i > relative_tolerance·σ_max.
              * @default 1e-10
              */
             relative_tolerance?: number;
-            /**
-             * Q
-             * @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too.
-             */
-            q?: number[] | null;
-            /**
-             * Joint Positions
-             * @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
-             */
-            joint_positions?: {
-                [key: string]: number;
-            } | null;
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -2031,10 +1968,8 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Reference */
-            reference: string;
-            /** Q */
-            q: number[];
+            reference: components["schemas"]["JacobianReference"];
+            q: components["schemas"]["Configuration"];
             /**
              * Rows
              * @description The task's Jacobian rows, in order.
@@ -2150,12 +2085,10 @@ export interface components {
             joints: string[];
             /** Samples */
             samples: number;
-            /** Sampling */
-            sampling: string;
+            sampling: components["schemas"]["ReachabilitySampling"];
             /** Seed */
             seed: number;
-            /** Self Collision */
-            self_collision: string;
+            self_collision: components["schemas"]["SelfCollisionMode"];
             /** Samples Per Second */
             samples_per_second: number | null;
             /** Build Seconds */
@@ -2251,13 +2184,8 @@ export interface components {
              * @description The group it is a state of (null if not given).
              */
             group: string | null;
-            /**
-             * Joint Positions
-             * @description Joint → value (rad or m).
-             */
-            joint_positions: {
-                [key: string]: number;
-            };
+            /** @description Joint → value (rad or m). */
+            joint_positions: components["schemas"]["JointPositions"];
         };
         /**
          * ObstacleIn
@@ -2269,12 +2197,8 @@ export interface components {
              * @description Unique name in the set.
              */
             name: string;
-            /**
-             * Shape
-             * @description Solid type.
-             * @enum {string}
-             */
-            shape: "box" | "sphere" | "cylinder" | "capsule";
+            /** @description Solid type. */
+            shape: components["schemas"]["ObstacleShape"];
             /**
              * Size
              * @description box: full edge lengths [x, y, z] (m).
@@ -2290,8 +2214,8 @@ export interface components {
              * @description cylinder: full height along local z (m); capsule: length of the segment between the hemisphere centres (m).
              */
             length?: number | null;
-            /** @description Placement; default the identity. */
-            pose?: components["schemas"]["ObstaclePose"] | null;
+            /** @description Placement root ← obstacle; default the identity (a missing position is the origin, a missing rotation the identity). */
+            pose?: components["schemas"]["Pose"] | null;
         };
         /**
          * ObstacleOut
@@ -2300,43 +2224,18 @@ export interface components {
         ObstacleOut: {
             /** Name */
             name: string;
-            /** Shape */
-            shape: string;
+            shape: components["schemas"]["ObstacleShape"];
             /** Size */
             size?: number[] | null;
             /** Radius */
             radius?: number | null;
             /** Length */
             length?: number | null;
-            pose: components["schemas"]["ObstaclePose"];
+            /** @description Placement root ← obstacle (every field filled). */
+            pose: components["schemas"]["Pose"];
         };
-        /**
-         * ObstaclePose
-         * @description Placement of an obstacle in the robot's root frame.
-         */
-        ObstaclePose: {
-            /**
-             * Position
-             * @description Centre [x, y, z] (m).
-             * @default [
-             *       0,
-             *       0,
-             *       0
-             *     ]
-             */
-            position?: number[];
-            /**
-             * Orientation
-             * @description Unit quaternion [x, y, z, w] (root ← obstacle).
-             * @default [
-             *       0,
-             *       0,
-             *       0,
-             *       1
-             *     ]
-             */
-            orientation?: number[];
-        };
+        /** @enum {string} */
+        ObstacleShape: "box" | "sphere" | "cylinder" | "capsule";
         /**
          * PairOut
          * @description A checked pair: two links (self) or a link and an obstacle (environment).
@@ -2352,11 +2251,7 @@ export interface components {
              * @description Link name (self) or obstacle name (environment).
              */
             b: string;
-            /**
-             * Kind
-             * @enum {string}
-             */
-            kind: "self" | "environment";
+            kind: components["schemas"]["CollisionPairKind"];
             /**
              * In Collision
              * @description Closer than the margin.
@@ -2393,21 +2288,15 @@ export interface components {
              * @description Its path parameter in [0, 1].
              */
             s: number;
-            /**
-             * Reason
-             * @enum {string}
-             */
-            reason: "unreachable" | "joint_limits" | "collision" | "singular" | "timeout" | "joint_step" | "branch";
+            /** @description Why the path stops there: an IK reason, or joint_step (a jump larger than max_joint_step) | branch (the point is on another branch). */
+            reason: components["schemas"]["PathFailureReason"];
             /**
              * Detail
              * @description What went wrong, with numbers.
              */
             detail: string;
-            /**
-             * Q
-             * @description Best configuration found for that point.
-             */
-            q: number[];
+            /** @description Best configuration found for that point. */
+            q: components["schemas"]["Configuration"];
             /**
              * Position Error
              * @description Of q (m).
@@ -2419,16 +2308,15 @@ export interface components {
              */
             orientation_error: number;
         };
+        /** @enum {string} */
+        PathFailureReason: "unreachable" | "joint_limits" | "collision" | "singular" | "timeout" | "joint_step" | "branch";
         /**
          * PathPointOut
          * @description One point of the joint path, verified by forward kinematics.
          */
         PathPointOut: {
-            /**
-             * Q
-             * @description Configuration in joint order (rad, m).
-             */
-            q: number[];
+            /** @description Configuration in joint order (rad, m). */
+            q: components["schemas"]["Configuration"];
             /**
              * Position Error
              * @description ‖p − p_path(s)‖ (m).
@@ -2461,12 +2349,10 @@ export interface components {
              */
             group?: string | null;
             /**
-             * Mode
              * @description pose (default): full 6-D pose | position: the frame origin only, orientation free (3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only.
              * @default pose
-             * @enum {string}
              */
-            mode?: "pose" | "position" | "orientation";
+            mode?: components["schemas"]["IKMode"];
             /**
              * Weights
              * @description Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); 0 frees a component (not checked against the tolerance).
@@ -2507,12 +2393,10 @@ export interface components {
              */
             margin?: number;
             /**
-             * Collision Geometry
              * @description With avoid_collisions: meshes, or their convex hulls (faster).
              * @default mesh
-             * @enum {string}
              */
-            collision_geometry?: "mesh" | "convex";
+            collision_geometry?: components["schemas"]["CollisionGeometry"];
             /**
              * Random Seed
              * @description Seed of the random restarts: the same request gives the same answer, bit for bit, on any worker (unless the time budget ends the search: give max_iterations for a budget that does not depend on the machine's speed). Default: a fixed table of restarts, also reproducible.
@@ -2522,14 +2406,12 @@ export interface components {
              * Start
              * @description Start configuration: one value per joint (joint order; with `group`, one per joint of the group is accepted too), joint → value (others: middle of their limits), or a named state of the SRDF (e.g. "ready"). The path starts at the frame's pose there; it is the first point of the answer.
              */
-            start: number[] | {
-                [key: string]: number;
-            } | string;
+            start: number[] | components["schemas"]["JointPositions"] | string;
             /**
              * Waypoints
-             * @description Poses to pass through, joined by straight lines (instead of segments).
+             * @description Poses to pass through, joined by straight lines (instead of segments); each a Pose as the `target` of /ik (an FK pose as is; redundant fields must agree).
              */
-            waypoints?: components["schemas"]["Target"][] | null;
+            waypoints?: components["schemas"]["Pose"][] | null;
             /**
              * Segments
              * @description Lines and arcs, each from the previous segment's end (instead of waypoints). A target's missing orientation (mode position) or position (mode orientation) keeps the previous pose's.
@@ -2560,8 +2442,7 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Mode */
-            mode: string;
+            mode: components["schemas"]["IKMode"];
             /** Joint Names */
             joint_names: string[];
             /**
@@ -2599,29 +2480,35 @@ export interface components {
         };
         /**
          * Pose
-         * @description A frame's placement in the robot's root (world) frame.
+         * @description A frame's placement in the robot's root (world) frame, the same shape in and out.
+         *
+         *     Answers fill all four fields. A request may give any subset that states what its
+         *     endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+         *     ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+         *     obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+         *     request is a 422 naming them. An answer's pose can be sent back as is.
          */
         Pose: {
             /**
              * Position
-             * @description [x, y, z] in metres.
+             * @description [x, y, z] in metres. A position is given by `position` or `matrix`.
              */
-            position: number[];
+            position?: number[];
             /**
              * Orientation
-             * @description Unit quaternion [x, y, z, w], w ≥ 0.
+             * @description Quaternion [x, y, z, w] (answers: unit, w ≥ 0); normalised if |q| is within 1e-3 of 1; q and −q are the same rotation. A rotation is given by `orientation`, `rpy` or `matrix`.
              */
-            orientation: number[];
+            orientation?: number[];
             /**
              * Rpy
              * @description [roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll).
              */
-            rpy: number[];
+            rpy?: number[];
             /**
              * Matrix
-             * @description 4×4 homogeneous transform (metres).
+             * @description 4×4 homogeneous transform root ← frame (metres): a rigid transform (orthonormal rotation within 1e-6, determinant +1, last row [0, 0, 0, 1]).
              */
-            matrix: number[][];
+            matrix?: number[][];
         };
         /**
          * Problem
@@ -2710,6 +2597,8 @@ export interface components {
              */
             in_bounds: boolean[];
         };
+        /** @enum {string} */
+        ReachabilitySampling: "random" | "grid";
         /**
          * Ready
          * @description Readiness answer: every check passed.
@@ -2906,24 +2795,18 @@ export interface components {
              */
             obstacles: number;
         };
+        /** @enum {string} */
+        SelfCollisionMode: "ignore" | "mesh" | "convex";
         /**
          * StaticsRequest
          * @description Exactly one of wrench (→ torques) or torques (→ wrench); with `group`, the torques are
          *     those of the group's joints (in the group's order).
          */
         StaticsRequest: {
-            /**
-             * Q
-             * @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too.
-             */
-            q?: number[] | null;
-            /**
-             * Joint Positions
-             * @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
-             */
-            joint_positions?: {
-                [key: string]: number;
-            } | null;
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -2935,12 +2818,10 @@ export interface components {
              */
             frame?: string | null;
             /**
-             * Reference
              * @description Axes of the wrench (as for the Jacobian). world: force and moment about the frame origin, world axes | local: frame axes | world_spatial: moment about the world origin.
              * @default world
-             * @enum {string}
              */
-            reference?: "world" | "local" | "world_spatial";
+            reference?: components["schemas"]["JacobianReference"];
             /**
              * Wrench
              * @description [fx, fy, fz, mx, my, mz] (N, N·m): the wrench the frame exerts on its environment.
@@ -2961,10 +2842,8 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Reference */
-            reference: string;
-            /** Q */
-            q: number[];
+            reference: components["schemas"]["JacobianReference"];
+            q: components["schemas"]["Configuration"];
             /**
              * Wrench
              * @description [fx, fy, fz, mx, my, mz] (N, N·m).
@@ -2989,27 +2868,6 @@ export interface components {
              * @description Rank of the 6×n Jacobian (σ_i > 1e-10·σ_max).
              */
             rank: number;
-        };
-        /**
-         * Target
-         * @description Desired placement of the frame in the root (world) frame.
-         */
-        Target: {
-            /**
-             * Position
-             * @description [x, y, z] in metres.
-             */
-            position?: number[] | null;
-            /**
-             * Orientation
-             * @description Quaternion [x, y, z, w]; normalised if |q| is within 1e-3 of 1.
-             */
-            orientation?: number[] | null;
-            /**
-             * Matrix
-             * @description 4×4 homogeneous transform (instead of position/orientation).
-             */
-            matrix?: number[][] | null;
         };
         /**
          * TimingIn
@@ -3103,23 +2961,19 @@ export interface components {
              */
             orientation?: number;
         };
+        /** @enum {string} */
+        TwistReference: "world" | "local";
+        /** @enum {string} */
+        VelocityDirection: "forward" | "inverse";
         /**
          * VelocityRequest
          * @description A configuration plus exactly one of ``joint_velocities`` (forward) or ``twist``.
          */
         VelocityRequest: {
-            /**
-             * Q
-             * @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too.
-             */
-            q?: number[] | null;
-            /**
-             * Joint Positions
-             * @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
-             */
-            joint_positions?: {
-                [key: string]: number;
-            } | null;
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -3131,12 +2985,10 @@ export interface components {
              */
             frame?: string | null;
             /**
-             * Reference
              * @description Axes of the twist: world (origin velocity and angular velocity in world axes, Pinocchio LOCAL_WORLD_ALIGNED) | local (the frame's own axes, LOCAL).
              * @default world
-             * @enum {string}
              */
-            reference?: "world" | "local";
+            reference?: components["schemas"]["TwistReference"];
             /**
              * Joint Velocities
              * @description Forward: q̇, one per joint in joint order (rad/s, m/s); with `group`, one per joint of the group is accepted too (the others at rest).
@@ -3148,12 +3000,10 @@ export interface components {
              */
             twist?: number[] | null;
             /**
-             * Mode
              * @description Inverse only: task rows to match (position: vx, vy, vz only; orientation: wx, wy, wz only).
              * @default pose
-             * @enum {string}
              */
-            mode?: "pose" | "position" | "orientation";
+            mode?: components["schemas"]["IKMode"];
             /**
              * Singular Threshold
              * @description Inverse: σ_min below which damping starts.
@@ -3176,15 +3026,9 @@ export interface components {
             robot_id: string;
             /** Frame */
             frame: string;
-            /** Reference */
-            reference: string;
-            /**
-             * Direction
-             * @enum {string}
-             */
-            direction: "forward" | "inverse";
-            /** Q */
-            q: number[];
+            reference: components["schemas"]["TwistReference"];
+            direction: components["schemas"]["VelocityDirection"];
+            q: components["schemas"]["Configuration"];
             /**
              * Joint Velocities
              * @description q̇ in joint order (rad/s, m/s).
@@ -3223,11 +3067,10 @@ export interface components {
              */
             frame?: string | null;
             /**
-             * Part
              * @description Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) | rotation (wx wy wz). Give either part or rows.
              * @default null
              */
-            part?: ("full" | "translation" | "rotation") | null;
+            part?: components["schemas"]["JacobianPart"] | null;
             /**
              * Rows
              * @description Explicit task rows by name (vx, vy, vz, wx, wy, wz) or index 0–5, e.g. ["vx", "vy"] for a planar arm in the x-y plane. Give either part or rows.
@@ -3235,12 +3078,10 @@ export interface components {
              */
             rows?: (string | number)[] | null;
             /**
-             * Reference
              * @description world (default): origin velocity and angular velocity in world axes (Pinocchio LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's own axes (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD).
              * @default world
-             * @enum {string}
              */
-            reference?: "world" | "local" | "world_spatial";
+            reference?: components["schemas"]["JacobianReference"];
             /**
              * Relative Tolerance
              * @description Relative rank tolerance: σ_i counts toward the rank when σ_i > relative_tolerance·σ_max.
@@ -3348,10 +3189,10 @@ export interface components {
             map_id: string;
             /**
              * Poses
-             * @description Poses (root frame).
+             * @description Poses (root frame): each needs a position (`position` or `matrix`); without a rotation (`orientation`, `rpy` or `matrix`), any orientation (best over the voxel).
              * @default null
              */
-            poses?: components["schemas"]["PoseIn"][] | null;
+            poses?: components["schemas"]["Pose"][] | null;
             /**
              * Positions
              * @description Compact form: N×3 positions (m).
@@ -3364,23 +3205,6 @@ export interface components {
              * @default null
              */
             orientations?: number[][] | null;
-        };
-        /**
-         * PoseIn
-         * @description A pose to look up; without orientation, any orientation (best over the voxel).
-         */
-        PoseIn: {
-            /**
-             * Position
-             * @description [x, y, z] (m), root frame.
-             */
-            position: number[];
-            /**
-             * Orientation
-             * @description Unit quaternion [x, y, z, w].
-             * @default null
-             */
-            orientation?: number[] | null;
         };
         /**
          * UrdfUpload
@@ -3420,7 +3244,34 @@ export interface components {
     responses: never;
     parameters: never;
     requestBodies: never;
-    headers: never;
+    headers: {
+        /** @description The request's id: the client's `X-Request-ID` when it is 1–128 characters of `[A-Za-z0-9._:/+=@-]`, else 24 random hex digits. Also in every log line of the request. */
+        "X-Request-ID": string;
+        /** @description Always `nosniff`: browsers keep to the declared content type. */
+        "X-Content-Type-Options": "nosniff";
+        /** @description The methods the path supports, e.g. `GET, HEAD, DELETE`. */
+        Allow: string;
+        /** @description Seconds to wait before sending the request again: sent when the service is shutting down (the request was cut off), not when it is not started. */
+        "Retry-After": number;
+        /** @description `Bearer`: the scheme the write endpoints expect. */
+        "WWW-Authenticate": string;
+        /** @description The URL of what was created (the robot, or the reachability job). */
+        Location: string;
+        /** @description `websocket`: the protocol this endpoint speaks. */
+        Upgrade: string;
+        /** @description `default-src 'none'; sandbox`: a client-supplied document is never run as a page. */
+        "Content-Security-Policy": string;
+        /** @description `attachment; filename=...` for a file not shown inline. */
+        "Content-Disposition": string;
+        /** @description The byte range sent (`bytes 0-9/124`), or on 416 the file size (`bytes *\/124`). */
+        "Content-Range": string;
+        /** @description `bytes`: a `Range` request is served. */
+        "Accept-Ranges": string;
+        /** @description The file's version (from its size and modification time), for `If-Range`. */
+        ETag: string;
+        /** @description When the file was stored (HTTP date). */
+        "Last-Modified": string;
+    };
     pathItems: never;
 }
 export type $defs = Record<string, never>;
@@ -3444,6 +3295,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3453,6 +3306,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3462,6 +3317,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3471,6 +3328,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3480,6 +3339,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3507,6 +3380,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3516,6 +3391,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3525,6 +3402,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3534,6 +3413,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3543,6 +3424,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3570,6 +3465,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3579,6 +3476,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3588,6 +3487,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3597,6 +3498,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3606,6 +3509,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3633,6 +3550,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3642,6 +3561,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3651,6 +3572,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3660,6 +3583,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3669,6 +3594,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3696,6 +3635,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3705,6 +3646,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3714,6 +3657,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3723,6 +3668,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3732,6 +3679,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3752,10 +3713,35 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
                     "application/json": components["schemas"]["Health"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
                 };
             };
         };
@@ -3772,15 +3758,31 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
                     "application/json": components["schemas"]["Ready"];
                 };
             };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
             /** @description Not ready: `checks` says which check failed and why. */
             503: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3805,6 +3807,9 @@ export interface operations {
             /** @description Successful Response */
             201: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Location: components["headers"]["Location"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3814,6 +3819,8 @@ export interface operations {
             /** @description The body is not JSON (or YAML). */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3823,6 +3830,9 @@ export interface operations {
             /** @description A bearer token is required. */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3832,6 +3842,8 @@ export interface operations {
             /** @description Wrong token, or a built-in robot. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3841,6 +3853,8 @@ export interface operations {
             /** @description The robot id is taken. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3850,6 +3864,8 @@ export interface operations {
             /** @description The body exceeds DENAVIT_MAX_PACKAGE_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3859,6 +3875,8 @@ export interface operations {
             /** @description Unsupported Content-Type. */
             415: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3868,6 +3886,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3892,12 +3924,13 @@ export interface operations {
             /** @description The file (model/stl, model/vnd.collada+xml, model/obj, image/png, image/jpeg, application/xml, or application/octet-stream), as a download. */
             200: {
                 headers: {
-                    /** @description Always `default-src 'none'; sandbox`: a browser shows the document, if at all, in an opaque origin that runs no script. */
-                    "Content-Security-Policy"?: string;
-                    /** @description `attachment; filename=...` (RFC 6266), on every type but image/png and image/jpeg: a browser saves the file instead of opening it. */
-                    "Content-Disposition"?: string;
-                    /** @description Always `nosniff` (on every answer of the service). */
-                    "X-Content-Type-Options"?: string;
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Content-Security-Policy": components["headers"]["Content-Security-Policy"];
+                    "Content-Disposition": components["headers"]["Content-Disposition"];
+                    "Accept-Ranges": components["headers"]["Accept-Ranges"];
+                    ETag: components["headers"]["ETag"];
+                    "Last-Modified": components["headers"]["Last-Modified"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3907,13 +3940,26 @@ export interface operations {
             /** @description The byte ranges asked for by `Range`, with the same headers. */
             206: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Content-Security-Policy": components["headers"]["Content-Security-Policy"];
+                    "Content-Disposition": components["headers"]["Content-Disposition"];
+                    "Accept-Ranges": components["headers"]["Accept-Ranges"];
+                    ETag: components["headers"]["ETag"];
+                    "Last-Modified": components["headers"]["Last-Modified"];
+                    "Content-Range": components["headers"]["Content-Range"];
                     [name: string]: unknown;
                 };
-                content?: never;
+                content: {
+                    "application/octet-stream": Blob;
+                };
             };
             /** @description A malformed `Range` header. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Content-Security-Policy": components["headers"]["Content-Security-Policy"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3923,6 +3969,19 @@ export interface operations {
             /** @description Unknown robot, or no such file. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3932,6 +3991,10 @@ export interface operations {
             /** @description A `Range` outside the file. */
             416: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Content-Security-Policy": components["headers"]["Content-Security-Policy"];
+                    "Content-Range": components["headers"]["Content-Range"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3941,6 +4004,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3966,6 +4043,9 @@ export interface operations {
             /** @description Successful Response */
             201: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Location: components["headers"]["Location"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3975,6 +4055,8 @@ export interface operations {
             /** @description The body is not JSON (or YAML). */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3984,6 +4066,9 @@ export interface operations {
             /** @description A bearer token is required. */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -3993,6 +4078,8 @@ export interface operations {
             /** @description Wrong token, or a built-in robot. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4002,6 +4089,8 @@ export interface operations {
             /** @description The robot id is taken. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4011,6 +4100,8 @@ export interface operations {
             /** @description The body exceeds DENAVIT_MAX_UPLOAD_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4020,6 +4111,8 @@ export interface operations {
             /** @description Unsupported Content-Type. */
             415: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4029,6 +4122,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4053,6 +4160,9 @@ export interface operations {
             /** @description Successful Response */
             201: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Location: components["headers"]["Location"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4062,6 +4172,8 @@ export interface operations {
             /** @description The body is not JSON (or YAML). */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4071,6 +4183,9 @@ export interface operations {
             /** @description A bearer token is required. */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4080,6 +4195,8 @@ export interface operations {
             /** @description Wrong token, or a built-in robot. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4089,6 +4206,8 @@ export interface operations {
             /** @description The robot id is taken. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4098,6 +4217,8 @@ export interface operations {
             /** @description The body exceeds DENAVIT_MAX_UPLOAD_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4107,6 +4228,8 @@ export interface operations {
             /** @description Unsupported Content-Type. */
             415: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4116,6 +4239,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4139,6 +4276,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4148,6 +4287,31 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The path belongs to another resource that does not support this method (e.g. `GET /robots/package` is the path of another operation); `Allow` lists the methods it supports. */
+            405: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Allow: components["headers"]["Allow"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4157,6 +4321,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4180,6 +4358,8 @@ export interface operations {
             /** @description Successful Response */
             204: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content?: never;
@@ -4187,6 +4367,9 @@ export interface operations {
             /** @description A bearer token is required. */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4196,6 +4379,8 @@ export interface operations {
             /** @description Wrong token, or a built-in robot. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4205,6 +4390,31 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The path belongs to another resource that does not support this method (e.g. `DELETE /robots/package` is the path of another operation); `Allow` lists the methods it supports. */
+            405: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Allow: components["headers"]["Allow"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4214,6 +4424,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4234,10 +4458,35 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
                     "application/json": components["schemas"]["RobotList"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
                 };
             };
         };
@@ -4257,12 +4506,10 @@ export interface operations {
             /** @description URDF, as a download (`<robot_id>.urdf`). */
             200: {
                 headers: {
-                    /** @description Always `default-src 'none'; sandbox`: a browser shows the document, if at all, in an opaque origin that runs no script. */
-                    "Content-Security-Policy"?: string;
-                    /** @description `attachment; filename=...` (RFC 6266), on every type but image/png and image/jpeg: a browser saves the file instead of opening it. */
-                    "Content-Disposition"?: string;
-                    /** @description Always `nosniff` (on every answer of the service). */
-                    "X-Content-Type-Options"?: string;
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Content-Security-Policy": components["headers"]["Content-Security-Policy"];
+                    "Content-Disposition": components["headers"]["Content-Disposition"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4272,6 +4519,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4281,6 +4541,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4304,16 +4578,34 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    /** @description `default-src 'none'; sandbox`: a client-supplied document is never run as a page. */
+                    "Content-Security-Policy"?: string;
+                    "Content-Disposition": components["headers"]["Content-Disposition"];
                     [name: string]: unknown;
                 };
                 content: {
                     "application/json": components["schemas"]["DHTableDoc"];
-                    "application/yaml": unknown;
+                    "application/yaml": components["schemas"]["DHTableDoc"];
                 };
             };
             /** @description Unknown robot, or not a DH robot. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4323,6 +4615,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4350,6 +4656,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4359,6 +4667,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4368,6 +4678,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4377,6 +4689,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4386,6 +4700,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4413,6 +4741,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4422,6 +4752,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4431,6 +4763,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4440,6 +4774,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4449,6 +4785,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4476,6 +4826,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4485,6 +4837,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4494,6 +4848,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4503,6 +4859,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4512,6 +4870,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4539,6 +4911,9 @@ export interface operations {
             /** @description Successful Response */
             202: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Location: components["headers"]["Location"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4548,6 +4923,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4557,6 +4934,9 @@ export interface operations {
             /** @description A write endpoint without `Authorization: Bearer <token>` (DENAVIT_API_TOKEN set). */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4566,6 +4946,8 @@ export interface operations {
             /** @description The bearer token is not valid, or the resource may not be changed. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4575,6 +4957,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4584,6 +4968,8 @@ export interface operations {
             /** @description Too many builds queued or running. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4593,6 +4979,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4602,6 +4990,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4625,6 +5027,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4634,6 +5038,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4643,6 +5049,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4652,6 +5071,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4677,6 +5110,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4686,6 +5121,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4695,6 +5132,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4704,6 +5154,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4729,6 +5193,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4738,6 +5204,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4747,6 +5215,9 @@ export interface operations {
             /** @description A write endpoint without `Authorization: Bearer <token>` (DENAVIT_API_TOKEN set). */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4756,6 +5227,8 @@ export interface operations {
             /** @description The bearer token is not valid, or the resource may not be changed. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4765,6 +5238,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4774,6 +5249,19 @@ export interface operations {
             /** @description The job has already finished. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4783,6 +5271,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4806,6 +5308,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4815,6 +5319,19 @@ export interface operations {
             /** @description Unknown robot, frame, joint or other named resource. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4824,6 +5341,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4849,6 +5380,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4858,6 +5391,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4867,6 +5402,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4876,6 +5424,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4901,6 +5463,8 @@ export interface operations {
             /** @description Successful Response */
             204: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content?: never;
@@ -4908,6 +5472,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4917,6 +5483,9 @@ export interface operations {
             /** @description A write endpoint without `Authorization: Bearer <token>` (DENAVIT_API_TOKEN set). */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4926,6 +5495,8 @@ export interface operations {
             /** @description The bearer token is not valid, or the resource may not be changed. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4935,6 +5506,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4944,6 +5528,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4971,6 +5569,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4980,6 +5580,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4989,6 +5591,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -4998,6 +5602,8 @@ export interface operations {
             /** @description The map belongs to an older robot model. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5007,6 +5613,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5016,6 +5624,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5050,6 +5672,8 @@ export interface operations {
             /** @description The heat map (PNG). */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5059,6 +5683,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5068,6 +5694,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5077,6 +5716,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5104,6 +5757,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5113,6 +5768,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5122,6 +5779,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5131,6 +5790,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5140,6 +5801,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5167,6 +5842,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5176,6 +5853,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5185,6 +5864,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5194,6 +5875,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5203,6 +5886,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5226,6 +5923,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5235,6 +5934,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5244,6 +5956,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5264,10 +5990,35 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
                     "application/json": components["schemas"]["SceneList"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
                 };
             };
         };
@@ -5288,6 +6039,8 @@ export interface operations {
             /** @description Successful Response */
             201: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5297,6 +6050,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5306,6 +6061,9 @@ export interface operations {
             /** @description A write endpoint without `Authorization: Bearer <token>` (DENAVIT_API_TOKEN set). */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5315,6 +6073,8 @@ export interface operations {
             /** @description The bearer token is not valid, or the resource may not be changed. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5324,6 +6084,8 @@ export interface operations {
             /** @description A scene with this name exists. */
             409: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5333,6 +6095,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5342,6 +6106,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5365,6 +6143,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5374,6 +6154,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5383,6 +6176,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5406,6 +6213,8 @@ export interface operations {
             /** @description Successful Response */
             204: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content?: never;
@@ -5413,6 +6222,9 @@ export interface operations {
             /** @description A write endpoint without `Authorization: Bearer <token>` (DENAVIT_API_TOKEN set). */
             401: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "WWW-Authenticate": components["headers"]["WWW-Authenticate"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5422,6 +6234,8 @@ export interface operations {
             /** @description The bearer token is not valid, or the resource may not be changed. */
             403: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5431,6 +6245,19 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5440,6 +6267,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5467,6 +6308,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5476,6 +6319,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5485,6 +6330,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5494,6 +6341,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5503,6 +6352,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5530,6 +6393,8 @@ export interface operations {
             /** @description Successful Response */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5539,6 +6404,8 @@ export interface operations {
             /** @description Malformed request body. */
             400: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5548,6 +6415,8 @@ export interface operations {
             /** @description Unknown robot, frame or joint. */
             404: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5557,6 +6426,8 @@ export interface operations {
             /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
             413: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5566,6 +6437,20 @@ export interface operations {
             /** @description A field failed validation; `field` names it. */
             422: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
                     [name: string]: unknown;
                 };
                 content: {
@@ -5586,10 +6471,90 @@ export interface operations {
             /** @description Prometheus text format 0.0.4: request counts and latency histograms per route template, requests in flight, IK outcomes, and per worker (`pid` label) resident memory, CPU time and start time. Every scrape reports the whole service, whichever worker answers it: counters are summed over all the worker processes of the service, including workers that have exited (a replaced worker's counts stay), so they never go down while the service runs; a restart of the service starts them from zero. `denavit_http_requests_in_flight` sums the live workers; `denavit_worker_processes{state}` counts the live and exited workers summed; `denavit_process_info{pid}` names the answering worker. A request is counted before the last byte of its response is sent. */
             200: {
                 headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
                     [name: string]: unknown;
                 };
                 content: {
                     "text/plain; version=0.0.4; charset=utf-8": string;
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+        };
+    };
+    get_robot_stream: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                robot_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Switching Protocols: the WebSocket is open. */
+            101: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content?: never;
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES (whatever the method). */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description A plain HTTP request: this endpoint needs the WebSocket upgrade. */
+            426: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    Upgrade: components["headers"]["Upgrade"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
                 };
             };
         };

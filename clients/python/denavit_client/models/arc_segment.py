@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 from attrs import define as _attrs_define
 
 if TYPE_CHECKING:
-    from ..models.target import Target
+    from ..models.pose import Pose
 
 
 T = TypeVar("T", bound="ArcSegment")
@@ -19,13 +19,25 @@ class ArcSegment:
 
         Attributes:
             type_ (Literal['arc']):
-            via (Target): Desired placement of the frame in the root (world) frame.
-            to (Target): Desired placement of the frame in the root (world) frame.
+            via (Pose): A frame's placement in the robot's root (world) frame, the same shape in and out.
+
+                Answers fill all four fields. A request may give any subset that states what its
+                endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+                ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+                obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+                request is a 422 naming them. An answer's pose can be sent back as is.
+            to (Pose): A frame's placement in the robot's root (world) frame, the same shape in and out.
+
+                Answers fill all four fields. A request may give any subset that states what its
+                endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+                ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+                obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+                request is a 422 naming them. An answer's pose can be sent back as is.
     """
 
     type_: Literal["arc"]
-    via: Target
-    to: Target
+    via: Pose
+    to: Pose
 
     def to_dict(self) -> dict[str, Any]:
         type_ = self.type_
@@ -48,16 +60,16 @@ class ArcSegment:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.target import Target  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
 
         d = dict(src_dict)
         type_ = cast(Literal["arc"], d.pop("type"))
         if type_ != "arc":
             raise ValueError(f"type must match const 'arc', got '{type_}'")
 
-        via = Target.from_dict(d.pop("via"))
+        via = Pose.from_dict(d.pop("via"))
 
-        to = Target.from_dict(d.pop("to"))
+        to = Pose.from_dict(d.pop("to"))
 
         arc_segment = cls(
             type_=type_,

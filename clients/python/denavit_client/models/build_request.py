@@ -5,9 +5,9 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.build_request_part_type_0 import BuildRequestPartType0
-from ..models.build_request_sampling import BuildRequestSampling
-from ..models.build_request_self_collision import BuildRequestSelfCollision
+from ..models.jacobian_part import JacobianPart
+from ..models.reachability_sampling import ReachabilitySampling
+from ..models.self_collision_mode import SelfCollisionMode
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -22,33 +22,33 @@ class BuildRequest:
     """What to build: grid, orientation bins, manipulability rows, sampling.
 
     Attributes:
-        frame (None | str | Unset): Frame; default the end effector.
-        voxel_size (float | Unset): Edge of a position voxel (m). Default: 0.05.
-        bounds (Bounds | None | Unset): Box to cover; default a box that contains every reachable position (centred on
-            the chain's first joint, half-size the chain's total length).
+        frame (None | str | Unset): Frame whose poses are mapped; default the robot's end effector.
+        voxel_size (float | None | Unset): Edge of a position voxel (m). Default: the box's longest edge / 24 (with the
+            default box, the chain's total length / 12: a coarse map of any arm), larger by steps of 5 % when voxels ×
+            orientation bins would exceed 16,777,216 cells.
+        bounds (Bounds | None | Unset): Box to cover (m, root frame); default a box that contains every reachable
+            position (centred on the chain's first joint, half-size the chain's total length).
         orientation_divisions (int | Unset): d: 4·d³ orientation bins (cubed 3-sphere, each ≈ 180°/d of rotation per
             axis); 0 = one bin (position-only map). Default: 4.
-        part (BuildRequestPartType0 | None | Unset): Manipulability rows: full (default) | translation | rotation.
+        part (JacobianPart | None | Unset): Manipulability rows: full (default) | translation | rotation.
         rows (list[int | str] | None | Unset): Explicit manipulability rows, e.g. ["vx", "vy"].
-        samples (int | Unset): Joint-space samples (grid: rounded). Default: 200000.
-        sampling (BuildRequestSampling | Unset): random: uniform within joint limits | grid: g = round(samples^(1/k))
-            values per joint. Default: BuildRequestSampling.RANDOM.
+        samples (int | Unset): Joint-space samples (grid: rounded); the default builds in well under a second on a
+            7-joint arm. Default: 200000.
+        sampling (ReachabilitySampling | Unset):
         seed (int | Unset): Seed of the random samples. Default: 0.
-        self_collision (BuildRequestSelfCollision | Unset): Drop self-colliding samples using the collision module's
-            geometry (mesh or convex hulls); one collision query per sample, far slower. Default:
-            BuildRequestSelfCollision.IGNORE.
+        self_collision (SelfCollisionMode | Unset):
     """
 
     frame: None | str | Unset = UNSET
-    voxel_size: float | Unset = 0.05
+    voxel_size: float | None | Unset = UNSET
     bounds: Bounds | None | Unset = UNSET
     orientation_divisions: int | Unset = 4
-    part: BuildRequestPartType0 | None | Unset = UNSET
+    part: JacobianPart | None | Unset = UNSET
     rows: list[int | str] | None | Unset = UNSET
     samples: int | Unset = 200000
-    sampling: BuildRequestSampling | Unset = BuildRequestSampling.RANDOM
+    sampling: ReachabilitySampling | Unset = UNSET
     seed: int | Unset = 0
-    self_collision: BuildRequestSelfCollision | Unset = BuildRequestSelfCollision.IGNORE
+    self_collision: SelfCollisionMode | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.bounds import Bounds  # noqa: PLC0415
@@ -59,7 +59,11 @@ class BuildRequest:
         else:
             frame = self.frame
 
-        voxel_size = self.voxel_size
+        voxel_size: float | None | Unset
+        if isinstance(self.voxel_size, Unset):
+            voxel_size = UNSET
+        else:
+            voxel_size = self.voxel_size
 
         bounds: dict[str, Any] | None | Unset
         if isinstance(self.bounds, Unset):
@@ -74,7 +78,7 @@ class BuildRequest:
         part: None | str | Unset
         if isinstance(self.part, Unset):
             part = UNSET
-        elif isinstance(self.part, BuildRequestPartType0):
+        elif isinstance(self.part, JacobianPart):
             part = self.part.value
         else:
             part = self.part
@@ -145,7 +149,14 @@ class BuildRequest:
 
         frame = _parse_frame(d.pop("frame", UNSET))
 
-        voxel_size = d.pop("voxel_size", UNSET)
+        def _parse_voxel_size(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        voxel_size = _parse_voxel_size(d.pop("voxel_size", UNSET))
 
         def _parse_bounds(data: object) -> Bounds | None | Unset:
             if data is None:
@@ -166,7 +177,7 @@ class BuildRequest:
 
         orientation_divisions = d.pop("orientation_divisions", UNSET)
 
-        def _parse_part(data: object) -> BuildRequestPartType0 | None | Unset:
+        def _parse_part(data: object) -> JacobianPart | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -174,12 +185,12 @@ class BuildRequest:
             try:
                 if not isinstance(data, str):
                     raise TypeError()
-                part_type_0 = BuildRequestPartType0(data)
+                part_type_0 = JacobianPart(data)
 
                 return part_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(BuildRequestPartType0 | None | Unset, data)
+            return cast(JacobianPart | None | Unset, data)
 
         part = _parse_part(d.pop("part", UNSET))
 
@@ -212,20 +223,20 @@ class BuildRequest:
         samples = d.pop("samples", UNSET)
 
         _sampling = d.pop("sampling", UNSET)
-        sampling: BuildRequestSampling | Unset
+        sampling: ReachabilitySampling | Unset
         if isinstance(_sampling, Unset):
             sampling = UNSET
         else:
-            sampling = BuildRequestSampling(_sampling)
+            sampling = ReachabilitySampling(_sampling)
 
         seed = d.pop("seed", UNSET)
 
         _self_collision = d.pop("self_collision", UNSET)
-        self_collision: BuildRequestSelfCollision | Unset
+        self_collision: SelfCollisionMode | Unset
         if isinstance(_self_collision, Unset):
             self_collision = UNSET
         else:
-            self_collision = BuildRequestSelfCollision(_self_collision)
+            self_collision = SelfCollisionMode(_self_collision)
 
         build_request = cls(
             frame=frame,

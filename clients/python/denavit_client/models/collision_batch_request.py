@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.collision_batch_request_geometry import CollisionBatchRequestGeometry
+from ..models.collision_geometry import CollisionGeometry
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -27,8 +27,7 @@ class CollisionBatchRequest:
         margin (float | Unset): Safety margin (m): pairs closer than this count as in collision. Default: 0.0.
         distances (bool | Unset): Compute every checked pair's distance and witness points (slower, especially with
             meshes). Default: False.
-        geometry (CollisionBatchRequestGeometry | Unset): mesh: the URDF collision meshes (exact); convex: their convex
-            hulls (faster, conservative, signed distances). Default: CollisionBatchRequestGeometry.MESH.
+        geometry (CollisionGeometry | Unset):
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -39,7 +38,7 @@ class CollisionBatchRequest:
     scene: None | str | Unset = UNSET
     margin: float | Unset = 0.0
     distances: bool | Unset = False
-    geometry: CollisionBatchRequestGeometry | Unset = CollisionBatchRequestGeometry.MESH
+    geometry: CollisionGeometry | Unset = UNSET
     group: None | str | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
@@ -151,11 +150,11 @@ class CollisionBatchRequest:
         distances = d.pop("distances", UNSET)
 
         _geometry = d.pop("geometry", UNSET)
-        geometry: CollisionBatchRequestGeometry | Unset
+        geometry: CollisionGeometry | Unset
         if isinstance(_geometry, Unset):
             geometry = UNSET
         else:
-            geometry = CollisionBatchRequestGeometry(_geometry)
+            geometry = CollisionGeometry(_geometry)
 
         def _parse_group(data: object) -> None | str | Unset:
             if data is None:

@@ -6,6 +6,7 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.collision_geometry import CollisionGeometry
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="CollisionBatchResponse")
@@ -17,7 +18,7 @@ class CollisionBatchResponse:
 
     Attributes:
         robot_id (str):
-        geometry (str):
+        geometry (CollisionGeometry):
         margin (float):
         count (int):
         num_in_collision (int):
@@ -30,7 +31,7 @@ class CollisionBatchResponse:
     """
 
     robot_id: str
-    geometry: str
+    geometry: CollisionGeometry
     margin: float
     count: int
     num_in_collision: int
@@ -45,7 +46,7 @@ class CollisionBatchResponse:
     def to_dict(self) -> dict[str, Any]:
         robot_id = self.robot_id
 
-        geometry = self.geometry
+        geometry = self.geometry.value
 
         margin = self.margin
 
@@ -107,7 +108,7 @@ class CollisionBatchResponse:
         d = dict(src_dict)
         robot_id = d.pop("robot_id")
 
-        geometry = d.pop("geometry")
+        geometry = CollisionGeometry(d.pop("geometry"))
 
         margin = d.pop("margin")
 

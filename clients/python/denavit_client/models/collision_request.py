@@ -5,13 +5,11 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.collision_request_geometry import CollisionRequestGeometry
+from ..models.collision_geometry import CollisionGeometry
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.collision_request_joint_positions_type_0 import (
-        CollisionRequestJointPositionsType0,
-    )
+    from ..models.joint_positions import JointPositions
     from ..models.obstacle_in import ObstacleIn
 
 
@@ -28,14 +26,13 @@ class CollisionRequest:
         margin (float | Unset): Safety margin (m): pairs closer than this count as in collision. Default: 0.0.
         distances (bool | Unset): Compute every checked pair's distance and witness points (slower, especially with
             meshes). Default: False.
-        geometry (CollisionRequestGeometry | Unset): mesh: the URDF collision meshes (exact); convex: their convex hulls
-            (faster, conservative, signed distances). Default: CollisionRequestGeometry.MESH.
+        geometry (CollisionGeometry | Unset):
         q (list[float] | None | Unset): One value per actuated joint, in the order of GET /robots/{id} (rad for revolute
             and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is
             accepted too.
-        joint_positions (CollisionRequestJointPositionsType0 | None | Unset): Joint name → value (rad or m); joints not
-            given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal
-            multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
+        joint_positions (JointPositions | None | Unset): Joint name → value (rad or m); joints not given take their
+            neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader +
+            offset within 1e-9 (see mimic_joints of GET /robots/{id}).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -45,15 +42,13 @@ class CollisionRequest:
     scene: None | str | Unset = UNSET
     margin: float | Unset = 0.0
     distances: bool | Unset = False
-    geometry: CollisionRequestGeometry | Unset = CollisionRequestGeometry.MESH
+    geometry: CollisionGeometry | Unset = UNSET
     q: list[float] | None | Unset = UNSET
-    joint_positions: CollisionRequestJointPositionsType0 | None | Unset = UNSET
+    joint_positions: JointPositions | None | Unset = UNSET
     group: None | str | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.collision_request_joint_positions_type_0 import (
-            CollisionRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         obstacles: list[dict[str, Any]] | None | Unset
         if isinstance(self.obstacles, Unset):
@@ -93,7 +88,7 @@ class CollisionRequest:
         joint_positions: dict[str, Any] | None | Unset
         if isinstance(self.joint_positions, Unset):
             joint_positions = UNSET
-        elif isinstance(self.joint_positions, CollisionRequestJointPositionsType0):
+        elif isinstance(self.joint_positions, JointPositions):
             joint_positions = self.joint_positions.to_dict()
         else:
             joint_positions = self.joint_positions
@@ -128,9 +123,7 @@ class CollisionRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.collision_request_joint_positions_type_0 import (
-            CollisionRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
         from ..models.obstacle_in import ObstacleIn  # noqa: PLC0415
 
         d = dict(src_dict)
@@ -171,11 +164,11 @@ class CollisionRequest:
         distances = d.pop("distances", UNSET)
 
         _geometry = d.pop("geometry", UNSET)
-        geometry: CollisionRequestGeometry | Unset
+        geometry: CollisionGeometry | Unset
         if isinstance(_geometry, Unset):
             geometry = UNSET
         else:
-            geometry = CollisionRequestGeometry(_geometry)
+            geometry = CollisionGeometry(_geometry)
 
         def _parse_q(data: object) -> list[float] | None | Unset:
             if data is None:
@@ -194,9 +187,7 @@ class CollisionRequest:
 
         q = _parse_q(d.pop("q", UNSET))
 
-        def _parse_joint_positions(
-            data: object,
-        ) -> CollisionRequestJointPositionsType0 | None | Unset:
+        def _parse_joint_positions(data: object) -> JointPositions | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -204,12 +195,12 @@ class CollisionRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                joint_positions_type_0 = CollisionRequestJointPositionsType0.from_dict(data)
+                joint_positions_type_0 = JointPositions.from_dict(data)
 
                 return joint_positions_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(CollisionRequestJointPositionsType0 | None | Unset, data)
+            return cast(JointPositions | None | Unset, data)
 
         joint_positions = _parse_joint_positions(d.pop("joint_positions", UNSET))
 

@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.collision_geometry import CollisionGeometry
+
 if TYPE_CHECKING:
     from ..models.pair_out import PairOut
 
@@ -19,8 +21,9 @@ class CollisionResponse:
 
     Attributes:
         robot_id (str):
-        q (list[float]): The configuration checked, in joint order.
-        geometry (str):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
+        geometry (CollisionGeometry):
         margin (float):
         in_collision (bool): Any pair closer than the margin.
         self_collision (bool): Two links of the robot collide.
@@ -33,7 +36,7 @@ class CollisionResponse:
 
     robot_id: str
     q: list[float]
-    geometry: str
+    geometry: CollisionGeometry
     margin: float
     in_collision: bool
     self_collision: bool
@@ -48,7 +51,7 @@ class CollisionResponse:
 
         q = self.q
 
-        geometry = self.geometry
+        geometry = self.geometry.value
 
         margin = self.margin
 
@@ -96,7 +99,7 @@ class CollisionResponse:
 
         q = cast(list[float], d.pop("q"))
 
-        geometry = d.pop("geometry")
+        geometry = CollisionGeometry(d.pop("geometry"))
 
         margin = d.pop("margin")
 

@@ -5,7 +5,7 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.dh_row_doc_type_type_0 import DHRowDocTypeType0
+from ..models.dh_joint_type import DHJointType
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="DHRowDoc")
@@ -21,7 +21,7 @@ class DHRowDoc:
         d (float): Link offset; the constant part for a prismatic joint.
         theta (float): Joint angle offset (θ = q + theta for revolute joints).
         name (None | str | Unset): Joint name (default j<i>, 1-based).
-        type_ (DHRowDocTypeType0 | None | Unset): Joint kind (null: revolute). Default: DHRowDocTypeType0.REVOLUTE.
+        type_ (DHJointType | None | Unset): Joint kind (null: revolute). Default: DHJointType.REVOLUTE.
         lower (float | None | Unset): Lower limit of q (table units).
         upper (float | None | Unset): Upper limit of q (table units).
         velocity (float | None | Unset): Velocity limit (units per second).
@@ -33,7 +33,7 @@ class DHRowDoc:
     d: float
     theta: float
     name: None | str | Unset = UNSET
-    type_: DHRowDocTypeType0 | None | Unset = DHRowDocTypeType0.REVOLUTE
+    type_: DHJointType | None | Unset = DHJointType.REVOLUTE
     lower: float | None | Unset = UNSET
     upper: float | None | Unset = UNSET
     velocity: float | None | Unset = UNSET
@@ -57,7 +57,7 @@ class DHRowDoc:
         type_: None | str | Unset
         if isinstance(self.type_, Unset):
             type_ = UNSET
-        elif isinstance(self.type_, DHRowDocTypeType0):
+        elif isinstance(self.type_, DHJointType):
             type_ = self.type_.value
         else:
             type_ = self.type_
@@ -131,7 +131,7 @@ class DHRowDoc:
 
         name = _parse_name(d.pop("name", UNSET))
 
-        def _parse_type_(data: object) -> DHRowDocTypeType0 | None | Unset:
+        def _parse_type_(data: object) -> DHJointType | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -139,12 +139,12 @@ class DHRowDoc:
             try:
                 if not isinstance(data, str):
                     raise TypeError()
-                type_type_0 = DHRowDocTypeType0(data)
+                type_type_0 = DHJointType(data)
 
                 return type_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(DHRowDocTypeType0 | None | Unset, data)
+            return cast(DHJointType | None | Unset, data)
 
         type_ = _parse_type_(d.pop("type", UNSET))
 

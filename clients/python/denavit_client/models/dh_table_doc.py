@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.dh_table_doc_convention import DHTableDocConvention
+from ..models.dh_convention import DHConvention
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -29,7 +29,7 @@ class DHTableDoc:
 
         Attributes:
             name (str): Robot id: 1-64 of a-z, 0-9, '_' and '-'.
-            convention (DHTableDocConvention):
+            convention (DHConvention):
             joints (list[DHRowDoc]):
             description (None | str | Unset):  Default: ''.
             units (DHUnitsDoc | None | Unset):
@@ -39,7 +39,7 @@ class DHTableDoc:
     """
 
     name: str
-    convention: DHTableDocConvention
+    convention: DHConvention
     joints: list[DHRowDoc]
     description: None | str | Unset = ""
     units: DHUnitsDoc | None | Unset = UNSET
@@ -131,7 +131,7 @@ class DHTableDoc:
         d = dict(src_dict)
         name = d.pop("name")
 
-        convention = DHTableDocConvention(d.pop("convention"))
+        convention = DHConvention(d.pop("convention"))
 
         joints = []
         _joints = d.pop("joints")

@@ -5,8 +5,8 @@ from typing import Any, TypeVar
 
 from attrs import define as _attrs_define
 
-from ..models.dh_units_doc_angle import DHUnitsDocAngle
-from ..models.dh_units_doc_length import DHUnitsDocLength
+from ..models.angle_unit import AngleUnit
+from ..models.length_unit import LengthUnit
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="DHUnitsDoc")
@@ -17,12 +17,12 @@ class DHUnitsDoc:
     """Units of the table's numbers (the service converts to SI on import).
 
     Attributes:
-        length (DHUnitsDocLength | Unset): Unit of a, d, xyz, limits. Default: DHUnitsDocLength.M.
-        angle (DHUnitsDocAngle | Unset): Unit of alpha, theta, rpy, limits. Default: DHUnitsDocAngle.RAD.
+        length (LengthUnit | Unset):
+        angle (AngleUnit | Unset):
     """
 
-    length: DHUnitsDocLength | Unset = DHUnitsDocLength.M
-    angle: DHUnitsDocAngle | Unset = DHUnitsDocAngle.RAD
+    length: LengthUnit | Unset = UNSET
+    angle: AngleUnit | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
         length: str | Unset = UNSET
@@ -47,18 +47,18 @@ class DHUnitsDoc:
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
         _length = d.pop("length", UNSET)
-        length: DHUnitsDocLength | Unset
+        length: LengthUnit | Unset
         if isinstance(_length, Unset):
             length = UNSET
         else:
-            length = DHUnitsDocLength(_length)
+            length = LengthUnit(_length)
 
         _angle = d.pop("angle", UNSET)
-        angle: DHUnitsDocAngle | Unset
+        angle: AngleUnit | Unset
         if isinstance(_angle, Unset):
             angle = UNSET
         else:
-            angle = DHUnitsDocAngle(_angle)
+            angle = AngleUnit(_angle)
 
         dh_units_doc = cls(
             length=length,

@@ -8,7 +8,7 @@ from attrs import define as _attrs_define
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.fk_request_joint_positions_type_0 import FKRequestJointPositionsType0
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="FKRequest")
@@ -22,9 +22,9 @@ class FKRequest:
         q (list[float] | None | Unset): One value per actuated joint, in the order of GET /robots/{id} (rad for revolute
             and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is
             accepted too.
-        joint_positions (FKRequestJointPositionsType0 | None | Unset): Joint name → value (rad or m); joints not given
-            take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier
-            × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
+        joint_positions (JointPositions | None | Unset): Joint name → value (rad or m); joints not given take their
+            neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader +
+            offset within 1e-9 (see mimic_joints of GET /robots/{id}).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -33,12 +33,12 @@ class FKRequest:
     """
 
     q: list[float] | None | Unset = UNSET
-    joint_positions: FKRequestJointPositionsType0 | None | Unset = UNSET
+    joint_positions: JointPositions | None | Unset = UNSET
     group: None | str | Unset = UNSET
     frames: list[str] | None | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.fk_request_joint_positions_type_0 import FKRequestJointPositionsType0  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         q: list[float] | None | Unset
         if isinstance(self.q, Unset):
@@ -52,7 +52,7 @@ class FKRequest:
         joint_positions: dict[str, Any] | None | Unset
         if isinstance(self.joint_positions, Unset):
             joint_positions = UNSET
-        elif isinstance(self.joint_positions, FKRequestJointPositionsType0):
+        elif isinstance(self.joint_positions, JointPositions):
             joint_positions = self.joint_positions.to_dict()
         else:
             joint_positions = self.joint_positions
@@ -88,7 +88,7 @@ class FKRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.fk_request_joint_positions_type_0 import FKRequestJointPositionsType0  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -109,7 +109,7 @@ class FKRequest:
 
         q = _parse_q(d.pop("q", UNSET))
 
-        def _parse_joint_positions(data: object) -> FKRequestJointPositionsType0 | None | Unset:
+        def _parse_joint_positions(data: object) -> JointPositions | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -117,12 +117,12 @@ class FKRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                joint_positions_type_0 = FKRequestJointPositionsType0.from_dict(data)
+                joint_positions_type_0 = JointPositions.from_dict(data)
 
                 return joint_positions_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(FKRequestJointPositionsType0 | None | Unset, data)
+            return cast(JointPositions | None | Unset, data)
 
         joint_positions = _parse_joint_positions(d.pop("joint_positions", UNSET))
 

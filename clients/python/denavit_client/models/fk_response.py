@@ -19,7 +19,8 @@ class FKResponse:
 
     Attributes:
         robot_id (str):
-        q (list[float]): The configuration used, in joint order.
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         poses (FKResponsePoses): Frame name → pose in the root frame.
         within_limits (bool): Whether every joint lies within its limits.
         joints_outside_limits (list[str]): Joints outside their limits.

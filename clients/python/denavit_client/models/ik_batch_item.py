@@ -6,8 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.ik_batch_item_reason_type_0 import IKBatchItemReasonType0
-from ..models.ik_batch_item_status import IKBatchItemStatus
+from ..models.ik_reason import IKReason
+from ..models.ik_status import IKStatus
 
 T = TypeVar("T", bound="IKBatchItem")
 
@@ -18,30 +18,31 @@ class IKBatchItem:
 
     Attributes:
         success (bool):
-        status (IKBatchItemStatus):
-        q (list[float]):
+        status (IKStatus):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         position_error (float):
         orientation_error (float):
         iterations (int):
         restarts (int):
         solve_time_ms (float):
-        reason (IKBatchItemReasonType0 | None): Why no solution was found (null on success): unreachable (the target
-            position is beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the
-            limits, or the best configuration is pinned at a limit) | collision (every solution found collides) | singular
-            (the search stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search).
-            See docs/ik.md.
+        reason (IKReason | None): Why no solution was found (null on success): unreachable (the target position is
+            beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the limits, or the
+            best configuration is pinned at a limit) | collision (every solution found collides) | singular (the search
+            stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search). See
+            docs/ik.md.
         detail (None | str): The reason in a sentence, with numbers.
     """
 
     success: bool
-    status: IKBatchItemStatus
+    status: IKStatus
     q: list[float]
     position_error: float
     orientation_error: float
     iterations: int
     restarts: int
     solve_time_ms: float
-    reason: IKBatchItemReasonType0 | None
+    reason: IKReason | None
     detail: None | str
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -63,7 +64,7 @@ class IKBatchItem:
         solve_time_ms = self.solve_time_ms
 
         reason: None | str
-        if isinstance(self.reason, IKBatchItemReasonType0):
+        if isinstance(self.reason, IKReason):
             reason = self.reason.value
         else:
             reason = self.reason
@@ -95,7 +96,7 @@ class IKBatchItem:
         d = dict(src_dict)
         success = d.pop("success")
 
-        status = IKBatchItemStatus(d.pop("status"))
+        status = IKStatus(d.pop("status"))
 
         q = cast(list[float], d.pop("q"))
 
@@ -109,18 +110,18 @@ class IKBatchItem:
 
         solve_time_ms = d.pop("solve_time_ms")
 
-        def _parse_reason(data: object) -> IKBatchItemReasonType0 | None:
+        def _parse_reason(data: object) -> IKReason | None:
             if data is None:
                 return data
             try:
                 if not isinstance(data, str):
                     raise TypeError()
-                reason_type_0 = IKBatchItemReasonType0(data)
+                reason_type_0 = IKReason(data)
 
                 return reason_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(IKBatchItemReasonType0 | None, data)
+            return cast(IKReason | None, data)
 
         reason = _parse_reason(d.pop("reason"))
 

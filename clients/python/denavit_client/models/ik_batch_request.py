@@ -5,14 +5,14 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.ik_batch_request_collision_geometry import IKBatchRequestCollisionGeometry
-from ..models.ik_batch_request_mode import IKBatchRequestMode
+from ..models.collision_geometry import CollisionGeometry
+from ..models.ik_mode import IKMode
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.ik_batch_request_seed_type_1 import IKBatchRequestSeedType1
+    from ..models.joint_positions import JointPositions
     from ..models.obstacle_in import ObstacleIn
-    from ..models.target import Target
+    from ..models.pose import Pose
     from ..models.tolerance import Tolerance
 
 
@@ -24,14 +24,12 @@ class IKBatchRequest:
     """Many targets for one frame.
 
     Attributes:
-        targets (list[Target]): Targets, solved in order.
+        targets (list[Pose]): Targets, solved in order. Each as `target` of /ik.
         frame (None | str | Unset): Frame to place; default the end effector (with `group`: its tip).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
-        mode (IKBatchRequestMode | Unset): pose (default): full 6-D pose | position: the frame origin only, orientation
-            free (3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only. Default:
-            IKBatchRequestMode.POSE.
+        mode (IKMode | Unset):
         weights (list[float] | None | Unset): Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); 0
             frees a component (not checked against the tolerance).
         tolerance (Tolerance | Unset): Success thresholds.
@@ -42,26 +40,24 @@ class IKBatchRequest:
         obstacles (list[ObstacleIn] | None | Unset): With avoid_collisions: obstacles (root frame).
         scene (None | str | Unset): With avoid_collisions: a stored scene's name.
         margin (float | Unset): With avoid_collisions: clearance (m) a solution must keep. Default: 0.0.
-        collision_geometry (IKBatchRequestCollisionGeometry | Unset): With avoid_collisions: meshes, or their convex
-            hulls (faster). Default: IKBatchRequestCollisionGeometry.MESH.
+        collision_geometry (CollisionGeometry | Unset):
         random_seed (int | None | Unset): Seed of the random restarts: the same request gives the same answer, bit for
             bit, on any worker (unless the time budget ends the search: give max_iterations for a budget that does not
             depend on the machine's speed). Default: a fixed table of restarts, also reproducible.
-        seed (IKBatchRequestSeedType1 | list[float] | None | str | Unset): Start configuration: one value per joint
-            (joint order; with `group`, one per joint of the group is accepted too), joint → value (others: middle of their
-            limits), or the name of a named state of the SRDF (e.g. "ready"; GET /robots/{id} lists them). Default: the
-            middle of the joint limits. Values within ±10000 (rad or m), as every configuration. IK answers always hold
-            every joint.
+        seed (JointPositions | list[float] | None | str | Unset): Start configuration: one value per joint (joint order;
+            with `group`, one per joint of the group is accepted too), joint → value (others: middle of their limits), or
+            the name of a named state of the SRDF (e.g. "ready"; GET /robots/{id} lists them). Default: the middle of the
+            joint limits. Values within ±10000 (rad or m), as every configuration. IK answers always hold every joint.
         chain_seeds (bool | Unset): Seed each target with the previous solution (trajectories); false: every target
             starts from `seed`, the targets are solved independently (spread over the server's batch worker processes), and
             with random_seed target i draws its restarts from its own generator, child i of SeedSequence(random_seed), so
             answers do not depend on how the batch is split. Default: True.
     """
 
-    targets: list[Target]
+    targets: list[Pose]
     frame: None | str | Unset = UNSET
     group: None | str | Unset = UNSET
-    mode: IKBatchRequestMode | Unset = IKBatchRequestMode.POSE
+    mode: IKMode | Unset = UNSET
     weights: list[float] | None | Unset = UNSET
     tolerance: Tolerance | Unset = UNSET
     timeout_ms: float | Unset = 5.0
@@ -70,15 +66,13 @@ class IKBatchRequest:
     obstacles: list[ObstacleIn] | None | Unset = UNSET
     scene: None | str | Unset = UNSET
     margin: float | Unset = 0.0
-    collision_geometry: IKBatchRequestCollisionGeometry | Unset = (
-        IKBatchRequestCollisionGeometry.MESH
-    )
+    collision_geometry: CollisionGeometry | Unset = UNSET
     random_seed: int | None | Unset = UNSET
-    seed: IKBatchRequestSeedType1 | list[float] | None | str | Unset = UNSET
+    seed: JointPositions | list[float] | None | str | Unset = UNSET
     chain_seeds: bool | Unset = True
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.ik_batch_request_seed_type_1 import IKBatchRequestSeedType1  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         targets = []
         for targets_item_data in self.targets:
@@ -160,7 +154,7 @@ class IKBatchRequest:
         elif isinstance(self.seed, list):
             seed = self.seed
 
-        elif isinstance(self.seed, IKBatchRequestSeedType1):
+        elif isinstance(self.seed, JointPositions):
             seed = self.seed.to_dict()
         else:
             seed = self.seed
@@ -209,16 +203,16 @@ class IKBatchRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.ik_batch_request_seed_type_1 import IKBatchRequestSeedType1  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
         from ..models.obstacle_in import ObstacleIn  # noqa: PLC0415
-        from ..models.target import Target  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
         from ..models.tolerance import Tolerance  # noqa: PLC0415
 
         d = dict(src_dict)
         targets = []
         _targets = d.pop("targets")
         for targets_item_data in _targets:
-            targets_item = Target.from_dict(targets_item_data)
+            targets_item = Pose.from_dict(targets_item_data)
 
             targets.append(targets_item)
 
@@ -241,11 +235,11 @@ class IKBatchRequest:
         group = _parse_group(d.pop("group", UNSET))
 
         _mode = d.pop("mode", UNSET)
-        mode: IKBatchRequestMode | Unset
+        mode: IKMode | Unset
         if isinstance(_mode, Unset):
             mode = UNSET
         else:
-            mode = IKBatchRequestMode(_mode)
+            mode = IKMode(_mode)
 
         def _parse_weights(data: object) -> list[float] | None | Unset:
             if data is None:
@@ -318,11 +312,11 @@ class IKBatchRequest:
         margin = d.pop("margin", UNSET)
 
         _collision_geometry = d.pop("collision_geometry", UNSET)
-        collision_geometry: IKBatchRequestCollisionGeometry | Unset
+        collision_geometry: CollisionGeometry | Unset
         if isinstance(_collision_geometry, Unset):
             collision_geometry = UNSET
         else:
-            collision_geometry = IKBatchRequestCollisionGeometry(_collision_geometry)
+            collision_geometry = CollisionGeometry(_collision_geometry)
 
         def _parse_random_seed(data: object) -> int | None | Unset:
             if data is None:
@@ -333,7 +327,7 @@ class IKBatchRequest:
 
         random_seed = _parse_random_seed(d.pop("random_seed", UNSET))
 
-        def _parse_seed(data: object) -> IKBatchRequestSeedType1 | list[float] | None | str | Unset:
+        def _parse_seed(data: object) -> JointPositions | list[float] | None | str | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -349,12 +343,12 @@ class IKBatchRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                seed_type_1 = IKBatchRequestSeedType1.from_dict(data)
+                seed_type_1 = JointPositions.from_dict(data)
 
                 return seed_type_1
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(IKBatchRequestSeedType1 | list[float] | None | str | Unset, data)
+            return cast(JointPositions | list[float] | None | str | Unset, data)
 
         seed = _parse_seed(d.pop("seed", UNSET))
 

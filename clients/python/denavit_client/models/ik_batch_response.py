@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.ik_mode import IKMode
+
 if TYPE_CHECKING:
     from ..models.ik_batch_item import IKBatchItem
 
@@ -20,7 +22,7 @@ class IKBatchResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        mode (str):
+        mode (IKMode):
         joint_names (list[str]):
         solved (int): How many targets succeeded.
         results (list[IKBatchItem]):
@@ -31,7 +33,7 @@ class IKBatchResponse:
 
     robot_id: str
     frame: str
-    mode: str
+    mode: IKMode
     joint_names: list[str]
     solved: int
     results: list[IKBatchItem]
@@ -44,7 +46,7 @@ class IKBatchResponse:
 
         frame = self.frame
 
-        mode = self.mode
+        mode = self.mode.value
 
         joint_names = self.joint_names
 
@@ -85,7 +87,7 @@ class IKBatchResponse:
 
         frame = d.pop("frame")
 
-        mode = d.pop("mode")
+        mode = IKMode(d.pop("mode"))
 
         joint_names = cast(list[str], d.pop("joint_names"))
 

@@ -5,15 +5,15 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.ik_request_collision_geometry import IKRequestCollisionGeometry
-from ..models.ik_request_mode import IKRequestMode
-from ..models.ik_request_rank_by import IKRequestRankBy
+from ..models.collision_geometry import CollisionGeometry
+from ..models.ik_mode import IKMode
+from ..models.ik_rank_by import IKRankBy
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.ik_request_seed_type_1 import IKRequestSeedType1
+    from ..models.joint_positions import JointPositions
     from ..models.obstacle_in import ObstacleIn
-    from ..models.target import Target
+    from ..models.pose import Pose
     from ..models.tolerance import Tolerance
 
 
@@ -25,14 +25,18 @@ class IKRequest:
     """One IK query.
 
     Attributes:
-        target (Target): Desired placement of the frame in the root (world) frame.
+        target (Pose): A frame's placement in the robot's root (world) frame, the same shape in and out.
+
+            Answers fill all four fields. A request may give any subset that states what its
+            endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+            ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+            obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+            request is a 422 naming them. An answer's pose can be sent back as is.
         frame (None | str | Unset): Frame to place; default the end effector (with `group`: its tip).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
-        mode (IKRequestMode | Unset): pose (default): full 6-D pose | position: the frame origin only, orientation free
-            (3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only. Default:
-            IKRequestMode.POSE.
+        mode (IKMode | Unset):
         weights (list[float] | None | Unset): Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); 0
             frees a component (not checked against the tolerance).
         tolerance (Tolerance | Unset): Success thresholds.
@@ -43,27 +47,23 @@ class IKRequest:
         obstacles (list[ObstacleIn] | None | Unset): With avoid_collisions: obstacles (root frame).
         scene (None | str | Unset): With avoid_collisions: a stored scene's name.
         margin (float | Unset): With avoid_collisions: clearance (m) a solution must keep. Default: 0.0.
-        collision_geometry (IKRequestCollisionGeometry | Unset): With avoid_collisions: meshes, or their convex hulls
-            (faster). Default: IKRequestCollisionGeometry.MESH.
+        collision_geometry (CollisionGeometry | Unset):
         random_seed (int | None | Unset): Seed of the random restarts: the same request gives the same answer, bit for
             bit, on any worker (unless the time budget ends the search: give max_iterations for a budget that does not
             depend on the machine's speed). Default: a fixed table of restarts, also reproducible.
-        seed (IKRequestSeedType1 | list[float] | None | str | Unset): Start configuration: one value per joint (joint
-            order; with `group`, one per joint of the group is accepted too), joint → value (others: middle of their
-            limits), or the name of a named state of the SRDF (e.g. "ready"; GET /robots/{id} lists them). Default: the
-            middle of the joint limits. Values within ±10000 (rad or m), as every configuration. IK answers always hold
-            every joint.
+        seed (JointPositions | list[float] | None | str | Unset): Start configuration: one value per joint (joint order;
+            with `group`, one per joint of the group is accepted too), joint → value (others: middle of their limits), or
+            the name of a named state of the SRDF (e.g. "ready"; GET /robots/{id} lists them). Default: the middle of the
+            joint limits. Values within ±10000 (rad or m), as every configuration. IK answers always hold every joint.
         num_solutions (int | Unset): Distinct solutions wanted: one per branch (shoulder/elbow/wrist flags where the arm
             has them, else clusters in joint space; see docs/ik.md). Default: 1.
-        rank_by (IKRequestRankBy | Unset): Order of the solutions: seed_distance (smallest largest-joint move first) |
-            manipulability (largest Yoshikawa measure first) | clearance (largest distance to the obstacles first; needs
-            avoid_collisions with obstacles or a scene). Default: IKRequestRankBy.SEED_DISTANCE.
+        rank_by (IKRankBy | Unset):
     """
 
-    target: Target
+    target: Pose
     frame: None | str | Unset = UNSET
     group: None | str | Unset = UNSET
-    mode: IKRequestMode | Unset = IKRequestMode.POSE
+    mode: IKMode | Unset = UNSET
     weights: list[float] | None | Unset = UNSET
     tolerance: Tolerance | Unset = UNSET
     timeout_ms: float | Unset = 5.0
@@ -72,14 +72,14 @@ class IKRequest:
     obstacles: list[ObstacleIn] | None | Unset = UNSET
     scene: None | str | Unset = UNSET
     margin: float | Unset = 0.0
-    collision_geometry: IKRequestCollisionGeometry | Unset = IKRequestCollisionGeometry.MESH
+    collision_geometry: CollisionGeometry | Unset = UNSET
     random_seed: int | None | Unset = UNSET
-    seed: IKRequestSeedType1 | list[float] | None | str | Unset = UNSET
+    seed: JointPositions | list[float] | None | str | Unset = UNSET
     num_solutions: int | Unset = 1
-    rank_by: IKRequestRankBy | Unset = IKRequestRankBy.SEED_DISTANCE
+    rank_by: IKRankBy | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.ik_request_seed_type_1 import IKRequestSeedType1  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         target = self.target.to_dict()
 
@@ -158,7 +158,7 @@ class IKRequest:
         elif isinstance(self.seed, list):
             seed = self.seed
 
-        elif isinstance(self.seed, IKRequestSeedType1):
+        elif isinstance(self.seed, JointPositions):
             seed = self.seed.to_dict()
         else:
             seed = self.seed
@@ -213,13 +213,13 @@ class IKRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.ik_request_seed_type_1 import IKRequestSeedType1  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
         from ..models.obstacle_in import ObstacleIn  # noqa: PLC0415
-        from ..models.target import Target  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
         from ..models.tolerance import Tolerance  # noqa: PLC0415
 
         d = dict(src_dict)
-        target = Target.from_dict(d.pop("target"))
+        target = Pose.from_dict(d.pop("target"))
 
         def _parse_frame(data: object) -> None | str | Unset:
             if data is None:
@@ -240,11 +240,11 @@ class IKRequest:
         group = _parse_group(d.pop("group", UNSET))
 
         _mode = d.pop("mode", UNSET)
-        mode: IKRequestMode | Unset
+        mode: IKMode | Unset
         if isinstance(_mode, Unset):
             mode = UNSET
         else:
-            mode = IKRequestMode(_mode)
+            mode = IKMode(_mode)
 
         def _parse_weights(data: object) -> list[float] | None | Unset:
             if data is None:
@@ -317,11 +317,11 @@ class IKRequest:
         margin = d.pop("margin", UNSET)
 
         _collision_geometry = d.pop("collision_geometry", UNSET)
-        collision_geometry: IKRequestCollisionGeometry | Unset
+        collision_geometry: CollisionGeometry | Unset
         if isinstance(_collision_geometry, Unset):
             collision_geometry = UNSET
         else:
-            collision_geometry = IKRequestCollisionGeometry(_collision_geometry)
+            collision_geometry = CollisionGeometry(_collision_geometry)
 
         def _parse_random_seed(data: object) -> int | None | Unset:
             if data is None:
@@ -332,7 +332,7 @@ class IKRequest:
 
         random_seed = _parse_random_seed(d.pop("random_seed", UNSET))
 
-        def _parse_seed(data: object) -> IKRequestSeedType1 | list[float] | None | str | Unset:
+        def _parse_seed(data: object) -> JointPositions | list[float] | None | str | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -348,23 +348,23 @@ class IKRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                seed_type_1 = IKRequestSeedType1.from_dict(data)
+                seed_type_1 = JointPositions.from_dict(data)
 
                 return seed_type_1
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(IKRequestSeedType1 | list[float] | None | str | Unset, data)
+            return cast(JointPositions | list[float] | None | str | Unset, data)
 
         seed = _parse_seed(d.pop("seed", UNSET))
 
         num_solutions = d.pop("num_solutions", UNSET)
 
         _rank_by = d.pop("rank_by", UNSET)
-        rank_by: IKRequestRankBy | Unset
+        rank_by: IKRankBy | Unset
         if isinstance(_rank_by, Unset):
             rank_by = UNSET
         else:
-            rank_by = IKRequestRankBy(_rank_by)
+            rank_by = IKRankBy(_rank_by)
 
         ik_request = cls(
             target=target,

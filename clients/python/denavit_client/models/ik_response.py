@@ -6,12 +6,13 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.ik_response_reason_type_0 import IKResponseReasonType0
-from ..models.ik_response_status import IKResponseStatus
+from ..models.ik_mode import IKMode
+from ..models.ik_reason import IKReason
+from ..models.ik_status import IKStatus
 
 if TYPE_CHECKING:
-    from ..models.ik_response_joint_positions import IKResponseJointPositions
     from ..models.ik_solution_out import IKSolutionOut
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="IKResponse")
@@ -24,11 +25,13 @@ class IKResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        mode (str):
+        mode (IKMode):
         success (bool):
-        status (IKResponseStatus):
-        q (list[float]): Best configuration (first solution, or lowest error).
-        joint_positions (IKResponseJointPositions):
+        status (IKStatus):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
+        joint_positions (JointPositions): Joint name → value: rad for revolute and continuous joints, m for prismatic
+            ones, each within ±10000 (a value beyond is a 422 naming `<field>.<joint>`).
         position_error (float): Of q: ‖p − p_t‖ (m).
         orientation_error (float): Of q: rotation angle to the target (rad).
         solutions (list[IKSolutionOut]): Distinct solutions, one per branch, in rank_by order.
@@ -36,11 +39,11 @@ class IKResponse:
         restarts (int):
         solve_time_ms (float):
         method (str): analytic | numeric | analytic+numeric
-        reason (IKResponseReasonType0 | None): Why no solution was found (null on success): unreachable (the target
-            position is beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the
-            limits, or the best configuration is pinned at a limit) | collision (every solution found collides) | singular
-            (the search stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search).
-            See docs/ik.md.
+        reason (IKReason | None): Why no solution was found (null on success): unreachable (the target position is
+            beyond the chain's reach bound; the search is skipped) | joint_limits (reached only outside the limits, or the
+            best configuration is pinned at a limit) | collision (every solution found collides) | singular (the search
+            stalled at a singular configuration) | timeout (the time budget or max_iterations ended the search). See
+            docs/ik.md.
         detail (None | str): The reason in a sentence, with numbers.
         solver_version (str): The solver's name and version: with random_seed (and max_iterations), the same request
             gives the same answer, bit for bit, on any worker of the same solver_version.
@@ -48,11 +51,11 @@ class IKResponse:
 
     robot_id: str
     frame: str
-    mode: str
+    mode: IKMode
     success: bool
-    status: IKResponseStatus
+    status: IKStatus
     q: list[float]
-    joint_positions: IKResponseJointPositions
+    joint_positions: JointPositions
     position_error: float
     orientation_error: float
     solutions: list[IKSolutionOut]
@@ -60,7 +63,7 @@ class IKResponse:
     restarts: int
     solve_time_ms: float
     method: str
-    reason: IKResponseReasonType0 | None
+    reason: IKReason | None
     detail: None | str
     solver_version: str
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -70,7 +73,7 @@ class IKResponse:
 
         frame = self.frame
 
-        mode = self.mode
+        mode = self.mode.value
 
         success = self.success
 
@@ -98,7 +101,7 @@ class IKResponse:
         method = self.method
 
         reason: None | str
-        if isinstance(self.reason, IKResponseReasonType0):
+        if isinstance(self.reason, IKReason):
             reason = self.reason.value
         else:
             reason = self.reason
@@ -136,23 +139,23 @@ class IKResponse:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.ik_response_joint_positions import IKResponseJointPositions  # noqa: PLC0415
         from ..models.ik_solution_out import IKSolutionOut  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
         robot_id = d.pop("robot_id")
 
         frame = d.pop("frame")
 
-        mode = d.pop("mode")
+        mode = IKMode(d.pop("mode"))
 
         success = d.pop("success")
 
-        status = IKResponseStatus(d.pop("status"))
+        status = IKStatus(d.pop("status"))
 
         q = cast(list[float], d.pop("q"))
 
-        joint_positions = IKResponseJointPositions.from_dict(d.pop("joint_positions"))
+        joint_positions = JointPositions.from_dict(d.pop("joint_positions"))
 
         position_error = d.pop("position_error")
 
@@ -173,18 +176,18 @@ class IKResponse:
 
         method = d.pop("method")
 
-        def _parse_reason(data: object) -> IKResponseReasonType0 | None:
+        def _parse_reason(data: object) -> IKReason | None:
             if data is None:
                 return data
             try:
                 if not isinstance(data, str):
                     raise TypeError()
-                reason_type_0 = IKResponseReasonType0(data)
+                reason_type_0 = IKReason(data)
 
                 return reason_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(IKResponseReasonType0 | None, data)
+            return cast(IKReason | None, data)
 
         reason = _parse_reason(d.pop("reason"))
 

@@ -7,7 +7,7 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 if TYPE_CHECKING:
-    from ..models.ik_solution_out_joint_positions import IKSolutionOutJointPositions
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="IKSolutionOut")
@@ -18,8 +18,10 @@ class IKSolutionOut:
     """A verified solution.
 
     Attributes:
-        q (list[float]): Configuration in joint order (rad, m).
-        joint_positions (IKSolutionOutJointPositions):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
+        joint_positions (JointPositions): Joint name → value: rad for revolute and continuous joints, m for prismatic
+            ones, each within ±10000 (a value beyond is a 422 naming `<field>.<joint>`).
         position_error (float): ‖p − p_t‖ (m), by forward kinematics.
         orientation_error (float): Rotation angle to the target (rad).
         branch (str): Its branch: flags such as "shoulder_left/elbow_up/wrist_noflip" (UR-type and spherical-wrist 6R
@@ -31,7 +33,7 @@ class IKSolutionOut:
     """
 
     q: list[float]
-    joint_positions: IKSolutionOutJointPositions
+    joint_positions: JointPositions
     position_error: float
     orientation_error: float
     branch: str
@@ -77,12 +79,12 @@ class IKSolutionOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.ik_solution_out_joint_positions import IKSolutionOutJointPositions  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
         q = cast(list[float], d.pop("q"))
 
-        joint_positions = IKSolutionOutJointPositions.from_dict(d.pop("joint_positions"))
+        joint_positions = JointPositions.from_dict(d.pop("joint_positions"))
 
         position_error = d.pop("position_error")
 

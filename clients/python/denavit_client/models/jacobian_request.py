@@ -5,11 +5,11 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.jacobian_request_reference import JacobianRequestReference
+from ..models.jacobian_reference import JacobianReference
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.jacobian_request_joint_positions_type_0 import JacobianRequestJointPositionsType0
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="JacobianRequest")
@@ -23,28 +23,24 @@ class JacobianRequest:
         q (list[float] | None | Unset): One value per actuated joint, in the order of GET /robots/{id} (rad for revolute
             and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is
             accepted too.
-        joint_positions (JacobianRequestJointPositionsType0 | None | Unset): Joint name → value (rad or m); joints not
-            given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal
-            multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
+        joint_positions (JointPositions | None | Unset): Joint name → value (rad or m); joints not given take their
+            neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader +
+            offset within 1e-9 (see mimic_joints of GET /robots/{id}).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
         frame (None | str | Unset): Frame; default the end effector (with `group`: the group's tip).
-        reference (JacobianRequestReference | Unset): world (default): origin velocity and angular velocity in world
-            axes (Pinocchio LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's own axes
-            (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD). Default: JacobianRequestReference.WORLD.
+        reference (JacobianReference | Unset):
     """
 
     q: list[float] | None | Unset = UNSET
-    joint_positions: JacobianRequestJointPositionsType0 | None | Unset = UNSET
+    joint_positions: JointPositions | None | Unset = UNSET
     group: None | str | Unset = UNSET
     frame: None | str | Unset = UNSET
-    reference: JacobianRequestReference | Unset = JacobianRequestReference.WORLD
+    reference: JacobianReference | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.jacobian_request_joint_positions_type_0 import (
-            JacobianRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         q: list[float] | None | Unset
         if isinstance(self.q, Unset):
@@ -58,7 +54,7 @@ class JacobianRequest:
         joint_positions: dict[str, Any] | None | Unset
         if isinstance(self.joint_positions, Unset):
             joint_positions = UNSET
-        elif isinstance(self.joint_positions, JacobianRequestJointPositionsType0):
+        elif isinstance(self.joint_positions, JointPositions):
             joint_positions = self.joint_positions.to_dict()
         else:
             joint_positions = self.joint_positions
@@ -97,9 +93,7 @@ class JacobianRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.jacobian_request_joint_positions_type_0 import (
-            JacobianRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -120,9 +114,7 @@ class JacobianRequest:
 
         q = _parse_q(d.pop("q", UNSET))
 
-        def _parse_joint_positions(
-            data: object,
-        ) -> JacobianRequestJointPositionsType0 | None | Unset:
+        def _parse_joint_positions(data: object) -> JointPositions | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -130,12 +122,12 @@ class JacobianRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                joint_positions_type_0 = JacobianRequestJointPositionsType0.from_dict(data)
+                joint_positions_type_0 = JointPositions.from_dict(data)
 
                 return joint_positions_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(JacobianRequestJointPositionsType0 | None | Unset, data)
+            return cast(JointPositions | None | Unset, data)
 
         joint_positions = _parse_joint_positions(d.pop("joint_positions", UNSET))
 
@@ -158,11 +150,11 @@ class JacobianRequest:
         frame = _parse_frame(d.pop("frame", UNSET))
 
         _reference = d.pop("reference", UNSET)
-        reference: JacobianRequestReference | Unset
+        reference: JacobianReference | Unset
         if isinstance(_reference, Unset):
             reference = UNSET
         else:
-            reference = JacobianRequestReference(_reference)
+            reference = JacobianReference(_reference)
 
         jacobian_request = cls(
             q=q,

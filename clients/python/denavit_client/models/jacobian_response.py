@@ -6,6 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.jacobian_reference import JacobianReference
+
 T = TypeVar("T", bound="JacobianResponse")
 
 
@@ -17,15 +19,16 @@ class JacobianResponse:
         Attributes:
             robot_id (str):
             frame (str):
-            reference (str):
-            q (list[float]):
+            reference (JacobianReference):
+            q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+                joints, m for prismatic ones.
             jacobian (list[list[float]]): 6×n (with `group`: 6×k, k the group's joints); linear rows in m/rad or m/m.
             joint_names (list[str]): The joint of each column.
     """
 
     robot_id: str
     frame: str
-    reference: str
+    reference: JacobianReference
     q: list[float]
     jacobian: list[list[float]]
     joint_names: list[str]
@@ -36,7 +39,7 @@ class JacobianResponse:
 
         frame = self.frame
 
-        reference = self.reference
+        reference = self.reference.value
 
         q = self.q
 
@@ -70,7 +73,7 @@ class JacobianResponse:
 
         frame = d.pop("frame")
 
-        reference = d.pop("reference")
+        reference = JacobianReference(d.pop("reference"))
 
         q = cast(list[float], d.pop("q"))
 

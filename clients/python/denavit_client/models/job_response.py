@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.job_response_status import JobResponseStatus
+from ..models.job_status import JobStatus
 
 if TYPE_CHECKING:
     from ..models.progress_out import ProgressOut
@@ -23,7 +23,7 @@ class JobResponse:
         job_id (str):
         robot_id (str):
         frame (str):
-        status (JobResponseStatus):
+        status (JobStatus):
         map_id (None | str): The stored map, once done.
         error (None | str):
         progress (ProgressOut): How far a build is.
@@ -32,7 +32,7 @@ class JobResponse:
     job_id: str
     robot_id: str
     frame: str
-    status: JobResponseStatus
+    status: JobStatus
     map_id: None | str
     error: None | str
     progress: ProgressOut
@@ -82,7 +82,7 @@ class JobResponse:
 
         frame = d.pop("frame")
 
-        status = JobResponseStatus(d.pop("status"))
+        status = JobStatus(d.pop("status"))
 
         def _parse_map_id(data: object) -> None | str:
             if data is None:

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 from attrs import define as _attrs_define
 
 if TYPE_CHECKING:
-    from ..models.target import Target
+    from ..models.pose import Pose
 
 
 T = TypeVar("T", bound="LineSegment")
@@ -18,11 +18,17 @@ class LineSegment:
 
     Attributes:
         type_ (Literal['line']):
-        to (Target): Desired placement of the frame in the root (world) frame.
+        to (Pose): A frame's placement in the robot's root (world) frame, the same shape in and out.
+
+            Answers fill all four fields. A request may give any subset that states what its
+            endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+            ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+            obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+            request is a 422 naming them. An answer's pose can be sent back as is.
     """
 
     type_: Literal["line"]
-    to: Target
+    to: Pose
 
     def to_dict(self) -> dict[str, Any]:
         type_ = self.type_
@@ -42,14 +48,14 @@ class LineSegment:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.target import Target  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
 
         d = dict(src_dict)
         type_ = cast(Literal["line"], d.pop("type"))
         if type_ != "line":
             raise ValueError(f"type must match const 'line', got '{type_}'")
 
-        to = Target.from_dict(d.pop("to"))
+        to = Pose.from_dict(d.pop("to"))
 
         line_segment = cls(
             type_=type_,

@@ -5,8 +5,8 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.manipulability_batch_request_part_type_0 import ManipulabilityBatchRequestPartType0
-from ..models.manipulability_batch_request_reference import ManipulabilityBatchRequestReference
+from ..models.jacobian_part import JacobianPart
+from ..models.jacobian_reference import JacobianReference
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="ManipulabilityBatchRequest")
@@ -20,14 +20,11 @@ class ManipulabilityBatchRequest:
         configurations (list[list[float]]): N configurations, each one value per joint in joint order (rad, m); with
             `group`, rows of the group's joints only are accepted too (others neutral).
         frame (None | str | Unset): Frame; default the end effector (with `group`: the group's tip).
-        part (ManipulabilityBatchRequestPartType0 | None | Unset): Task rows: full (vx vy vz wx wy wz, default) |
-            translation (vx vy vz) | rotation (wx wy wz). Give either part or rows.
+        part (JacobianPart | None | Unset): Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) |
+            rotation (wx wy wz). Give either part or rows.
         rows (list[int | str] | None | Unset): Explicit task rows by name (vx, vy, vz, wx, wy, wz) or index 0–5, e.g.
             ["vx", "vy"] for a planar arm in the x-y plane. Give either part or rows.
-        reference (ManipulabilityBatchRequestReference | Unset): world (default): origin velocity and angular velocity
-            in world axes (Pinocchio LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's
-            own axes (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD). Default:
-            ManipulabilityBatchRequestReference.WORLD.
+        reference (JacobianReference | Unset):
         relative_tolerance (float | Unset): Relative rank tolerance: σ_i counts toward the rank when σ_i >
             relative_tolerance·σ_max. Default: 1e-10.
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
@@ -37,11 +34,9 @@ class ManipulabilityBatchRequest:
 
     configurations: list[list[float]]
     frame: None | str | Unset = UNSET
-    part: ManipulabilityBatchRequestPartType0 | None | Unset = UNSET
+    part: JacobianPart | None | Unset = UNSET
     rows: list[int | str] | None | Unset = UNSET
-    reference: ManipulabilityBatchRequestReference | Unset = (
-        ManipulabilityBatchRequestReference.WORLD
-    )
+    reference: JacobianReference | Unset = UNSET
     relative_tolerance: float | Unset = 1e-10
     group: None | str | Unset = UNSET
 
@@ -61,7 +56,7 @@ class ManipulabilityBatchRequest:
         part: None | str | Unset
         if isinstance(self.part, Unset):
             part = UNSET
-        elif isinstance(self.part, ManipulabilityBatchRequestPartType0):
+        elif isinstance(self.part, JacobianPart):
             part = self.part.value
         else:
             part = self.part
@@ -132,7 +127,7 @@ class ManipulabilityBatchRequest:
 
         frame = _parse_frame(d.pop("frame", UNSET))
 
-        def _parse_part(data: object) -> ManipulabilityBatchRequestPartType0 | None | Unset:
+        def _parse_part(data: object) -> JacobianPart | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -140,12 +135,12 @@ class ManipulabilityBatchRequest:
             try:
                 if not isinstance(data, str):
                     raise TypeError()
-                part_type_0 = ManipulabilityBatchRequestPartType0(data)
+                part_type_0 = JacobianPart(data)
 
                 return part_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(ManipulabilityBatchRequestPartType0 | None | Unset, data)
+            return cast(JacobianPart | None | Unset, data)
 
         part = _parse_part(d.pop("part", UNSET))
 
@@ -176,11 +171,11 @@ class ManipulabilityBatchRequest:
         rows = _parse_rows(d.pop("rows", UNSET))
 
         _reference = d.pop("reference", UNSET)
-        reference: ManipulabilityBatchRequestReference | Unset
+        reference: JacobianReference | Unset
         if isinstance(_reference, Unset):
             reference = UNSET
         else:
-            reference = ManipulabilityBatchRequestReference(_reference)
+            reference = JacobianReference(_reference)
 
         relative_tolerance = d.pop("relative_tolerance", UNSET)
 

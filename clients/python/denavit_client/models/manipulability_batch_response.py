@@ -6,6 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.jacobian_reference import JacobianReference
+
 T = TypeVar("T", bound="ManipulabilityBatchResponse")
 
 
@@ -16,7 +18,7 @@ class ManipulabilityBatchResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        reference (str):
+        reference (JacobianReference):
         rows (list[str]):
         joints (list[str]):
         yoshikawa (list[float]):
@@ -31,7 +33,7 @@ class ManipulabilityBatchResponse:
 
     robot_id: str
     frame: str
-    reference: str
+    reference: JacobianReference
     rows: list[str]
     joints: list[str]
     yoshikawa: list[float]
@@ -49,7 +51,7 @@ class ManipulabilityBatchResponse:
 
         frame = self.frame
 
-        reference = self.reference
+        reference = self.reference.value
 
         rows = self.rows
 
@@ -104,7 +106,7 @@ class ManipulabilityBatchResponse:
 
         frame = d.pop("frame")
 
-        reference = d.pop("reference")
+        reference = JacobianReference(d.pop("reference"))
 
         rows = cast(list[str], d.pop("rows"))
 

@@ -5,14 +5,12 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.manipulability_request_part_type_0 import ManipulabilityRequestPartType0
-from ..models.manipulability_request_reference import ManipulabilityRequestReference
+from ..models.jacobian_part import JacobianPart
+from ..models.jacobian_reference import JacobianReference
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.manipulability_request_joint_positions_type_0 import (
-        ManipulabilityRequestJointPositionsType0,
-    )
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="ManipulabilityRequest")
@@ -24,40 +22,35 @@ class ManipulabilityRequest:
 
     Attributes:
         frame (None | str | Unset): Frame; default the end effector (with `group`: the group's tip).
-        part (ManipulabilityRequestPartType0 | None | Unset): Task rows: full (vx vy vz wx wy wz, default) | translation
-            (vx vy vz) | rotation (wx wy wz). Give either part or rows.
+        part (JacobianPart | None | Unset): Task rows: full (vx vy vz wx wy wz, default) | translation (vx vy vz) |
+            rotation (wx wy wz). Give either part or rows.
         rows (list[int | str] | None | Unset): Explicit task rows by name (vx, vy, vz, wx, wy, wz) or index 0–5, e.g.
             ["vx", "vy"] for a planar arm in the x-y plane. Give either part or rows.
-        reference (ManipulabilityRequestReference | Unset): world (default): origin velocity and angular velocity in
-            world axes (Pinocchio LOCAL_WORLD_ALIGNED; the textbook geometric Jacobian) | local: the same in the frame's own
-            axes (LOCAL) | world_spatial: spatial velocity at the world origin (WORLD). Default:
-            ManipulabilityRequestReference.WORLD.
+        reference (JacobianReference | Unset):
         relative_tolerance (float | Unset): Relative rank tolerance: σ_i counts toward the rank when σ_i >
             relative_tolerance·σ_max. Default: 1e-10.
         q (list[float] | None | Unset): One value per actuated joint, in the order of GET /robots/{id} (rad for revolute
             and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is
             accepted too.
-        joint_positions (ManipulabilityRequestJointPositionsType0 | None | Unset): Joint name → value (rad or m); joints
-            not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal
-            multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
+        joint_positions (JointPositions | None | Unset): Joint name → value (rad or m); joints not given take their
+            neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader +
+            offset within 1e-9 (see mimic_joints of GET /robots/{id}).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
     """
 
     frame: None | str | Unset = UNSET
-    part: ManipulabilityRequestPartType0 | None | Unset = UNSET
+    part: JacobianPart | None | Unset = UNSET
     rows: list[int | str] | None | Unset = UNSET
-    reference: ManipulabilityRequestReference | Unset = ManipulabilityRequestReference.WORLD
+    reference: JacobianReference | Unset = UNSET
     relative_tolerance: float | Unset = 1e-10
     q: list[float] | None | Unset = UNSET
-    joint_positions: ManipulabilityRequestJointPositionsType0 | None | Unset = UNSET
+    joint_positions: JointPositions | None | Unset = UNSET
     group: None | str | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.manipulability_request_joint_positions_type_0 import (
-            ManipulabilityRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         frame: None | str | Unset
         if isinstance(self.frame, Unset):
@@ -68,7 +61,7 @@ class ManipulabilityRequest:
         part: None | str | Unset
         if isinstance(self.part, Unset):
             part = UNSET
-        elif isinstance(self.part, ManipulabilityRequestPartType0):
+        elif isinstance(self.part, JacobianPart):
             part = self.part.value
         else:
             part = self.part
@@ -104,7 +97,7 @@ class ManipulabilityRequest:
         joint_positions: dict[str, Any] | None | Unset
         if isinstance(self.joint_positions, Unset):
             joint_positions = UNSET
-        elif isinstance(self.joint_positions, ManipulabilityRequestJointPositionsType0):
+        elif isinstance(self.joint_positions, JointPositions):
             joint_positions = self.joint_positions.to_dict()
         else:
             joint_positions = self.joint_positions
@@ -139,9 +132,7 @@ class ManipulabilityRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.manipulability_request_joint_positions_type_0 import (
-            ManipulabilityRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -154,7 +145,7 @@ class ManipulabilityRequest:
 
         frame = _parse_frame(d.pop("frame", UNSET))
 
-        def _parse_part(data: object) -> ManipulabilityRequestPartType0 | None | Unset:
+        def _parse_part(data: object) -> JacobianPart | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -162,12 +153,12 @@ class ManipulabilityRequest:
             try:
                 if not isinstance(data, str):
                     raise TypeError()
-                part_type_0 = ManipulabilityRequestPartType0(data)
+                part_type_0 = JacobianPart(data)
 
                 return part_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(ManipulabilityRequestPartType0 | None | Unset, data)
+            return cast(JacobianPart | None | Unset, data)
 
         part = _parse_part(d.pop("part", UNSET))
 
@@ -198,11 +189,11 @@ class ManipulabilityRequest:
         rows = _parse_rows(d.pop("rows", UNSET))
 
         _reference = d.pop("reference", UNSET)
-        reference: ManipulabilityRequestReference | Unset
+        reference: JacobianReference | Unset
         if isinstance(_reference, Unset):
             reference = UNSET
         else:
-            reference = ManipulabilityRequestReference(_reference)
+            reference = JacobianReference(_reference)
 
         relative_tolerance = d.pop("relative_tolerance", UNSET)
 
@@ -223,9 +214,7 @@ class ManipulabilityRequest:
 
         q = _parse_q(d.pop("q", UNSET))
 
-        def _parse_joint_positions(
-            data: object,
-        ) -> ManipulabilityRequestJointPositionsType0 | None | Unset:
+        def _parse_joint_positions(data: object) -> JointPositions | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -233,12 +222,12 @@ class ManipulabilityRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                joint_positions_type_0 = ManipulabilityRequestJointPositionsType0.from_dict(data)
+                joint_positions_type_0 = JointPositions.from_dict(data)
 
                 return joint_positions_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(ManipulabilityRequestJointPositionsType0 | None | Unset, data)
+            return cast(JointPositions | None | Unset, data)
 
         joint_positions = _parse_joint_positions(d.pop("joint_positions", UNSET))
 

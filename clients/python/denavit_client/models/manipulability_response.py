@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.jacobian_reference import JacobianReference
+
 if TYPE_CHECKING:
     from ..models.ellipsoid import Ellipsoid
 
@@ -20,8 +22,9 @@ class ManipulabilityResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        reference (str):
-        q (list[float]):
+        reference (JacobianReference):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         rows (list[str]): The task's Jacobian rows, in order.
         joints (list[str]): The task Jacobian's columns: the joints that move the frame.
         yoshikawa (float): ∏σ_i (= √det(J_t J_tᵀ) when rows ≤ joints).
@@ -45,7 +48,7 @@ class ManipulabilityResponse:
 
     robot_id: str
     frame: str
-    reference: str
+    reference: JacobianReference
     q: list[float]
     rows: list[str]
     joints: list[str]
@@ -71,7 +74,7 @@ class ManipulabilityResponse:
 
         frame = self.frame
 
-        reference = self.reference
+        reference = self.reference.value
 
         q = self.q
 
@@ -157,7 +160,7 @@ class ManipulabilityResponse:
 
         frame = d.pop("frame")
 
-        reference = d.pop("reference")
+        reference = JacobianReference(d.pop("reference"))
 
         q = cast(list[float], d.pop("q"))
 

@@ -6,6 +6,9 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.reachability_sampling import ReachabilitySampling
+from ..models.self_collision_mode import SelfCollisionMode
+
 if TYPE_CHECKING:
     from ..models.map_bounds import MapBounds
 
@@ -31,9 +34,9 @@ class MapInfo:
         rows (list[str]):
         joints (list[str]): The sampled joints (those that move the frame).
         samples (int):
-        sampling (str):
+        sampling (ReachabilitySampling):
         seed (int):
-        self_collision (str):
+        self_collision (SelfCollisionMode):
         samples_per_second (float | None):
         build_seconds (float | None):
         robot_fingerprint (str):
@@ -55,9 +58,9 @@ class MapInfo:
     rows: list[str]
     joints: list[str]
     samples: int
-    sampling: str
+    sampling: ReachabilitySampling
     seed: int
-    self_collision: str
+    self_collision: SelfCollisionMode
     samples_per_second: float | None
     build_seconds: float | None
     robot_fingerprint: str
@@ -93,11 +96,11 @@ class MapInfo:
 
         samples = self.samples
 
-        sampling = self.sampling
+        sampling = self.sampling.value
 
         seed = self.seed
 
-        self_collision = self.self_collision
+        self_collision = self.self_collision.value
 
         samples_per_second: float | None
         samples_per_second = self.samples_per_second
@@ -176,11 +179,11 @@ class MapInfo:
 
         samples = d.pop("samples")
 
-        sampling = d.pop("sampling")
+        sampling = ReachabilitySampling(d.pop("sampling"))
 
         seed = d.pop("seed")
 
-        self_collision = d.pop("self_collision")
+        self_collision = SelfCollisionMode(d.pop("self_collision"))
 
         def _parse_samples_per_second(data: object) -> float | None:
             if data is None:

@@ -7,7 +7,7 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 if TYPE_CHECKING:
-    from ..models.named_state_out_joint_positions import NamedStateOutJointPositions
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="NamedStateOut")
@@ -20,12 +20,13 @@ class NamedStateOut:
     Attributes:
         name (str):
         group (None | str): The group it is a state of (null if not given).
-        joint_positions (NamedStateOutJointPositions): Joint → value (rad or m).
+        joint_positions (JointPositions): Joint name → value: rad for revolute and continuous joints, m for prismatic
+            ones, each within ±10000 (a value beyond is a 422 naming `<field>.<joint>`).
     """
 
     name: str
     group: None | str
-    joint_positions: NamedStateOutJointPositions
+    joint_positions: JointPositions
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -50,7 +51,7 @@ class NamedStateOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.named_state_out_joint_positions import NamedStateOutJointPositions  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
         name = d.pop("name")
@@ -62,7 +63,7 @@ class NamedStateOut:
 
         group = _parse_group(d.pop("group"))
 
-        joint_positions = NamedStateOutJointPositions.from_dict(d.pop("joint_positions"))
+        joint_positions = JointPositions.from_dict(d.pop("joint_positions"))
 
         named_state_out = cls(
             name=name,

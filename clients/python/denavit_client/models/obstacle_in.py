@@ -5,11 +5,11 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.obstacle_in_shape import ObstacleInShape
+from ..models.obstacle_shape import ObstacleShape
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.obstacle_pose import ObstaclePose
+    from ..models.pose import Pose
 
 
 T = TypeVar("T", bound="ObstacleIn")
@@ -21,23 +21,24 @@ class ObstacleIn:
 
     Attributes:
         name (str): Unique name in the set.
-        shape (ObstacleInShape): Solid type.
+        shape (ObstacleShape):
         size (list[float] | None | Unset): box: full edge lengths [x, y, z] (m).
         radius (float | None | Unset): sphere, cylinder, capsule: radius (m).
         length (float | None | Unset): cylinder: full height along local z (m); capsule: length of the segment between
             the hemisphere centres (m).
-        pose (None | ObstaclePose | Unset): Placement; default the identity.
+        pose (None | Pose | Unset): Placement root ← obstacle; default the identity (a missing position is the origin, a
+            missing rotation the identity).
     """
 
     name: str
-    shape: ObstacleInShape
+    shape: ObstacleShape
     size: list[float] | None | Unset = UNSET
     radius: float | None | Unset = UNSET
     length: float | None | Unset = UNSET
-    pose: None | ObstaclePose | Unset = UNSET
+    pose: None | Pose | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.obstacle_pose import ObstaclePose  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
 
         name = self.name
 
@@ -67,7 +68,7 @@ class ObstacleIn:
         pose: dict[str, Any] | None | Unset
         if isinstance(self.pose, Unset):
             pose = UNSET
-        elif isinstance(self.pose, ObstaclePose):
+        elif isinstance(self.pose, Pose):
             pose = self.pose.to_dict()
         else:
             pose = self.pose
@@ -93,12 +94,12 @@ class ObstacleIn:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.obstacle_pose import ObstaclePose  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
 
         d = dict(src_dict)
         name = d.pop("name")
 
-        shape = ObstacleInShape(d.pop("shape"))
+        shape = ObstacleShape(d.pop("shape"))
 
         def _parse_size(data: object) -> list[float] | None | Unset:
             if data is None:
@@ -135,7 +136,7 @@ class ObstacleIn:
 
         length = _parse_length(d.pop("length", UNSET))
 
-        def _parse_pose(data: object) -> None | ObstaclePose | Unset:
+        def _parse_pose(data: object) -> None | Pose | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -143,12 +144,12 @@ class ObstacleIn:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                pose_type_0 = ObstaclePose.from_dict(data)
+                pose_type_0 = Pose.from_dict(data)
 
                 return pose_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(None | ObstaclePose | Unset, data)
+            return cast(None | Pose | Unset, data)
 
         pose = _parse_pose(d.pop("pose", UNSET))
 

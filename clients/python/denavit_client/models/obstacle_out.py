@@ -6,10 +6,11 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.obstacle_shape import ObstacleShape
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.obstacle_pose import ObstaclePose
+    from ..models.pose import Pose
 
 
 T = TypeVar("T", bound="ObstacleOut")
@@ -21,16 +22,22 @@ class ObstacleOut:
 
     Attributes:
         name (str):
-        shape (str):
-        pose (ObstaclePose): Placement of an obstacle in the robot's root frame.
+        shape (ObstacleShape):
+        pose (Pose): A frame's placement in the robot's root (world) frame, the same shape in and out.
+
+            Answers fill all four fields. A request may give any subset that states what its
+            endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+            ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+            obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+            request is a 422 naming them. An answer's pose can be sent back as is.
         size (list[float] | None | Unset):
         radius (float | None | Unset):
         length (float | None | Unset):
     """
 
     name: str
-    shape: str
-    pose: ObstaclePose
+    shape: ObstacleShape
+    pose: Pose
     size: list[float] | None | Unset = UNSET
     radius: float | None | Unset = UNSET
     length: float | None | Unset = UNSET
@@ -39,7 +46,7 @@ class ObstacleOut:
     def to_dict(self) -> dict[str, Any]:
         name = self.name
 
-        shape = self.shape
+        shape = self.shape.value
 
         pose = self.pose.to_dict()
 
@@ -84,14 +91,14 @@ class ObstacleOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.obstacle_pose import ObstaclePose  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
 
         d = dict(src_dict)
         name = d.pop("name")
 
-        shape = d.pop("shape")
+        shape = ObstacleShape(d.pop("shape"))
 
-        pose = ObstaclePose.from_dict(d.pop("pose"))
+        pose = Pose.from_dict(d.pop("pose"))
 
         def _parse_size(data: object) -> list[float] | None | Unset:
             if data is None:

@@ -6,7 +6,7 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.pair_out_kind import PairOutKind
+from ..models.collision_pair_kind import CollisionPairKind
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="PairOut")
@@ -19,7 +19,7 @@ class PairOut:
     Attributes:
         a (str): Link name.
         b (str): Link name (self) or obstacle name (environment).
-        kind (PairOutKind):
+        kind (CollisionPairKind):
         in_collision (bool): Closer than the margin.
         distance (float | None): Distance (m); negative = penetration depth where coal computes it (convex hulls,
             primitives); 0 for penetrating meshes.
@@ -29,7 +29,7 @@ class PairOut:
 
     a: str
     b: str
-    kind: PairOutKind
+    kind: CollisionPairKind
     in_collision: bool
     distance: float | None
     point_a: list[float] | None | Unset = UNSET
@@ -91,7 +91,7 @@ class PairOut:
 
         b = d.pop("b")
 
-        kind = PairOutKind(d.pop("kind"))
+        kind = CollisionPairKind(d.pop("kind"))
 
         in_collision = d.pop("in_collision")
 

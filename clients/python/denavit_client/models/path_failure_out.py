@@ -6,7 +6,7 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.path_failure_out_reason import PathFailureOutReason
+from ..models.path_failure_reason import PathFailureReason
 
 T = TypeVar("T", bound="PathFailureOut")
 
@@ -18,16 +18,17 @@ class PathFailureOut:
     Attributes:
         index (int): Index of the failed waypoint of the interpolated path.
         s (float): Its path parameter in [0, 1].
-        reason (PathFailureOutReason):
+        reason (PathFailureReason):
         detail (str): What went wrong, with numbers.
-        q (list[float]): Best configuration found for that point.
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         position_error (float): Of q (m).
         orientation_error (float): Of q (rad).
     """
 
     index: int
     s: float
-    reason: PathFailureOutReason
+    reason: PathFailureReason
     detail: str
     q: list[float]
     position_error: float
@@ -72,7 +73,7 @@ class PathFailureOut:
 
         s = d.pop("s")
 
-        reason = PathFailureOutReason(d.pop("reason"))
+        reason = PathFailureReason(d.pop("reason"))
 
         detail = d.pop("detail")
 

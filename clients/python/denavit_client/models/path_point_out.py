@@ -14,7 +14,8 @@ class PathPointOut:
     """One point of the joint path, verified by forward kinematics.
 
     Attributes:
-        q (list[float]): Configuration in joint order (rad, m).
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         position_error (float): ‖p − p_path(s)‖ (m).
         orientation_error (float): Rotation angle to the path's pose (rad).
         s (float): Path parameter in [0, 1] of this point's pose.

@@ -5,18 +5,18 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.path_request_collision_geometry import PathRequestCollisionGeometry
-from ..models.path_request_mode import PathRequestMode
+from ..models.collision_geometry import CollisionGeometry
+from ..models.ik_mode import IKMode
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
     from ..models.arc_segment import ArcSegment
+    from ..models.joint_positions import JointPositions
     from ..models.line_segment import LineSegment
     from ..models.max_deviation import MaxDeviation
     from ..models.max_step import MaxStep
     from ..models.obstacle_in import ObstacleIn
-    from ..models.path_request_start_type_1 import PathRequestStartType1
-    from ..models.target import Target
+    from ..models.pose import Pose
     from ..models.timing_in import TimingIn
     from ..models.tolerance import Tolerance
 
@@ -29,17 +29,14 @@ class PathRequest:
     """A Cartesian path from a start configuration: waypoints or segments (exactly one).
 
     Attributes:
-        start (list[float] | PathRequestStartType1 | str): Start configuration: one value per joint (joint order; with
-            `group`, one per joint of the group is accepted too), joint → value (others: middle of their limits), or a named
-            state of the SRDF (e.g. "ready"). The path starts at the frame's pose there; it is the first point of the
-            answer.
+        start (JointPositions | list[float] | str): Start configuration: one value per joint (joint order; with `group`,
+            one per joint of the group is accepted too), joint → value (others: middle of their limits), or a named state of
+            the SRDF (e.g. "ready"). The path starts at the frame's pose there; it is the first point of the answer.
         frame (None | str | Unset): Frame to place; default the end effector (with `group`: its tip).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
-        mode (PathRequestMode | Unset): pose (default): full 6-D pose | position: the frame origin only, orientation
-            free (3 task rows, fine for arms with fewer than 6 joints) | orientation: the rotation only. Default:
-            PathRequestMode.POSE.
+        mode (IKMode | Unset):
         weights (list[float] | None | Unset): Non-negative weights of the error [px, py, pz, rx, ry, rz] (world axes); 0
             frees a component (not checked against the tolerance).
         tolerance (Tolerance | Unset): Success thresholds.
@@ -50,12 +47,12 @@ class PathRequest:
         obstacles (list[ObstacleIn] | None | Unset): With avoid_collisions: obstacles (root frame).
         scene (None | str | Unset): With avoid_collisions: a stored scene's name.
         margin (float | Unset): With avoid_collisions: clearance (m) a solution must keep. Default: 0.0.
-        collision_geometry (PathRequestCollisionGeometry | Unset): With avoid_collisions: meshes, or their convex hulls
-            (faster). Default: PathRequestCollisionGeometry.MESH.
+        collision_geometry (CollisionGeometry | Unset):
         random_seed (int | None | Unset): Seed of the random restarts: the same request gives the same answer, bit for
             bit, on any worker (unless the time budget ends the search: give max_iterations for a budget that does not
             depend on the machine's speed). Default: a fixed table of restarts, also reproducible.
-        waypoints (list[Target] | None | Unset): Poses to pass through, joined by straight lines (instead of segments).
+        waypoints (list[Pose] | None | Unset): Poses to pass through, joined by straight lines (instead of segments);
+            each a Pose as the `target` of /ik (an FK pose as is; redundant fields must agree).
         segments (list[ArcSegment | LineSegment] | None | Unset): Lines and arcs, each from the previous segment's end
             (instead of waypoints). A target's missing orientation (mode position) or position (mode orientation) keeps the
             previous pose's.
@@ -74,10 +71,10 @@ class PathRequest:
             every point.
     """
 
-    start: list[float] | PathRequestStartType1 | str
+    start: JointPositions | list[float] | str
     frame: None | str | Unset = UNSET
     group: None | str | Unset = UNSET
-    mode: PathRequestMode | Unset = PathRequestMode.POSE
+    mode: IKMode | Unset = UNSET
     weights: list[float] | None | Unset = UNSET
     tolerance: Tolerance | Unset = UNSET
     timeout_ms: float | Unset = 5.0
@@ -86,9 +83,9 @@ class PathRequest:
     obstacles: list[ObstacleIn] | None | Unset = UNSET
     scene: None | str | Unset = UNSET
     margin: float | Unset = 0.0
-    collision_geometry: PathRequestCollisionGeometry | Unset = PathRequestCollisionGeometry.MESH
+    collision_geometry: CollisionGeometry | Unset = UNSET
     random_seed: int | None | Unset = UNSET
-    waypoints: list[Target] | None | Unset = UNSET
+    waypoints: list[Pose] | None | Unset = UNSET
     segments: list[ArcSegment | LineSegment] | None | Unset = UNSET
     max_step: MaxStep | Unset = UNSET
     max_joint_step: float | Unset = 0.1
@@ -97,15 +94,15 @@ class PathRequest:
     timing: None | TimingIn | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
         from ..models.line_segment import LineSegment  # noqa: PLC0415
-        from ..models.path_request_start_type_1 import PathRequestStartType1  # noqa: PLC0415
         from ..models.timing_in import TimingIn  # noqa: PLC0415
 
         start: dict[str, Any] | list[float] | str
         if isinstance(self.start, list):
             start = self.start
 
-        elif isinstance(self.start, PathRequestStartType1):
+        elif isinstance(self.start, JointPositions):
             start = self.start.to_dict()
         else:
             start = self.start
@@ -285,18 +282,18 @@ class PathRequest:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.arc_segment import ArcSegment  # noqa: PLC0415
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
         from ..models.line_segment import LineSegment  # noqa: PLC0415
         from ..models.max_deviation import MaxDeviation  # noqa: PLC0415
         from ..models.max_step import MaxStep  # noqa: PLC0415
         from ..models.obstacle_in import ObstacleIn  # noqa: PLC0415
-        from ..models.path_request_start_type_1 import PathRequestStartType1  # noqa: PLC0415
-        from ..models.target import Target  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
         from ..models.timing_in import TimingIn  # noqa: PLC0415
         from ..models.tolerance import Tolerance  # noqa: PLC0415
 
         d = dict(src_dict)
 
-        def _parse_start(data: object) -> list[float] | PathRequestStartType1 | str:
+        def _parse_start(data: object) -> JointPositions | list[float] | str:
             try:
                 if not isinstance(data, list):
                     raise TypeError()
@@ -308,12 +305,12 @@ class PathRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                start_type_1 = PathRequestStartType1.from_dict(data)
+                start_type_1 = JointPositions.from_dict(data)
 
                 return start_type_1
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(list[float] | PathRequestStartType1 | str, data)
+            return cast(JointPositions | list[float] | str, data)
 
         start = _parse_start(d.pop("start"))
 
@@ -336,11 +333,11 @@ class PathRequest:
         group = _parse_group(d.pop("group", UNSET))
 
         _mode = d.pop("mode", UNSET)
-        mode: PathRequestMode | Unset
+        mode: IKMode | Unset
         if isinstance(_mode, Unset):
             mode = UNSET
         else:
-            mode = PathRequestMode(_mode)
+            mode = IKMode(_mode)
 
         def _parse_weights(data: object) -> list[float] | None | Unset:
             if data is None:
@@ -413,11 +410,11 @@ class PathRequest:
         margin = d.pop("margin", UNSET)
 
         _collision_geometry = d.pop("collision_geometry", UNSET)
-        collision_geometry: PathRequestCollisionGeometry | Unset
+        collision_geometry: CollisionGeometry | Unset
         if isinstance(_collision_geometry, Unset):
             collision_geometry = UNSET
         else:
-            collision_geometry = PathRequestCollisionGeometry(_collision_geometry)
+            collision_geometry = CollisionGeometry(_collision_geometry)
 
         def _parse_random_seed(data: object) -> int | None | Unset:
             if data is None:
@@ -428,7 +425,7 @@ class PathRequest:
 
         random_seed = _parse_random_seed(d.pop("random_seed", UNSET))
 
-        def _parse_waypoints(data: object) -> list[Target] | None | Unset:
+        def _parse_waypoints(data: object) -> list[Pose] | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -439,14 +436,14 @@ class PathRequest:
                 waypoints_type_0 = []
                 _waypoints_type_0 = data
                 for waypoints_type_0_item_data in _waypoints_type_0:
-                    waypoints_type_0_item = Target.from_dict(waypoints_type_0_item_data)
+                    waypoints_type_0_item = Pose.from_dict(waypoints_type_0_item_data)
 
                     waypoints_type_0.append(waypoints_type_0_item)
 
                 return waypoints_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(list[Target] | None | Unset, data)
+            return cast(list[Pose] | None | Unset, data)
 
         waypoints = _parse_waypoints(d.pop("waypoints", UNSET))
 

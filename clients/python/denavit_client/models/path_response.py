@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.ik_mode import IKMode
+
 if TYPE_CHECKING:
     from ..models.path_failure_out import PathFailureOut
     from ..models.path_point_out import PathPointOut
@@ -22,7 +24,7 @@ class PathResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        mode (str):
+        mode (IKMode):
         joint_names (list[str]):
         fraction (float): Path parameter s reached (1.0: the whole path).
         points (list[PathPointOut]): The start, then every accepted point.
@@ -38,7 +40,7 @@ class PathResponse:
 
     robot_id: str
     frame: str
-    mode: str
+    mode: IKMode
     joint_names: list[str]
     fraction: float
     points: list[PathPointOut]
@@ -59,7 +61,7 @@ class PathResponse:
 
         frame = self.frame
 
-        mode = self.mode
+        mode = self.mode.value
 
         joint_names = self.joint_names
 
@@ -126,7 +128,7 @@ class PathResponse:
 
         frame = d.pop("frame")
 
-        mode = d.pop("mode")
+        mode = IKMode(d.pop("mode"))
 
         joint_names = cast(list[str], d.pop("joint_names"))
 

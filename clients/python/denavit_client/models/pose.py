@@ -4,69 +4,88 @@ from collections.abc import Mapping
 from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
-from attrs import field as _attrs_field
+
+from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="Pose")
 
 
 @_attrs_define
 class Pose:
-    """A frame's placement in the robot's root (world) frame.
+    """A frame's placement in the robot's root (world) frame, the same shape in and out.
 
-    Attributes:
-        position (list[float]): [x, y, z] in metres.
-        orientation (list[float]): Unit quaternion [x, y, z, w], w ≥ 0.
-        rpy (list[float]): [roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll).
-        matrix (list[list[float]]): 4×4 homogeneous transform (metres).
+    Answers fill all four fields. A request may give any subset that states what its
+    endpoint needs (IK mode ``pose``: a position and a rotation; ``position``: a position;
+    ``orientation``: a rotation; reachability queries: a position, the rotation optional;
+    obstacles: default the identity); given fields must agree within 1e-9 (m, rad) or the
+    request is a 422 naming them. An answer's pose can be sent back as is.
+
+        Attributes:
+            position (list[float] | Unset): [x, y, z] in metres. A position is given by `position` or `matrix`.
+            orientation (list[float] | Unset): Quaternion [x, y, z, w] (answers: unit, w ≥ 0); normalised if |q| is within
+                1e-3 of 1; q and −q are the same rotation. A rotation is given by `orientation`, `rpy` or `matrix`.
+            rpy (list[float] | Unset): [roll, pitch, yaw] in rad, R = Rz(yaw)·Ry(pitch)·Rx(roll).
+            matrix (list[list[float]] | Unset): 4×4 homogeneous transform root ← frame (metres): a rigid transform
+                (orthonormal rotation within 1e-6, determinant +1, last row [0, 0, 0, 1]).
     """
 
-    position: list[float]
-    orientation: list[float]
-    rpy: list[float]
-    matrix: list[list[float]]
-    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+    position: list[float] | Unset = UNSET
+    orientation: list[float] | Unset = UNSET
+    rpy: list[float] | Unset = UNSET
+    matrix: list[list[float]] | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        position = self.position
+        position: list[float] | Unset = UNSET
+        if not isinstance(self.position, Unset):
+            position = self.position
 
-        orientation = self.orientation
+        orientation: list[float] | Unset = UNSET
+        if not isinstance(self.orientation, Unset):
+            orientation = self.orientation
 
-        rpy = self.rpy
+        rpy: list[float] | Unset = UNSET
+        if not isinstance(self.rpy, Unset):
+            rpy = self.rpy
 
-        matrix = []
-        for matrix_item_data in self.matrix:
-            matrix_item = matrix_item_data
+        matrix: list[list[float]] | Unset = UNSET
+        if not isinstance(self.matrix, Unset):
+            matrix = []
+            for matrix_item_data in self.matrix:
+                matrix_item = matrix_item_data
 
-            matrix.append(matrix_item)
+                matrix.append(matrix_item)
 
         field_dict: dict[str, Any] = {}
-        field_dict.update(self.additional_properties)
-        field_dict.update(
-            {
-                "position": position,
-                "orientation": orientation,
-                "rpy": rpy,
-                "matrix": matrix,
-            }
-        )
+
+        field_dict.update({})
+        if position is not UNSET:
+            field_dict["position"] = position
+        if orientation is not UNSET:
+            field_dict["orientation"] = orientation
+        if rpy is not UNSET:
+            field_dict["rpy"] = rpy
+        if matrix is not UNSET:
+            field_dict["matrix"] = matrix
 
         return field_dict
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        position = cast(list[float], d.pop("position"))
+        position = cast(list[float], d.pop("position", UNSET))
 
-        orientation = cast(list[float], d.pop("orientation"))
+        orientation = cast(list[float], d.pop("orientation", UNSET))
 
-        rpy = cast(list[float], d.pop("rpy"))
+        rpy = cast(list[float], d.pop("rpy", UNSET))
 
-        matrix = []
-        _matrix = d.pop("matrix")
-        for matrix_item_data in _matrix:
-            matrix_item = cast(list[float], matrix_item_data)
+        _matrix = d.pop("matrix", UNSET)
+        matrix: list[list[float]] | Unset = UNSET
+        if _matrix is not UNSET:
+            matrix = []
+            for matrix_item_data in _matrix:
+                matrix_item = cast(list[float], matrix_item_data)
 
-            matrix.append(matrix_item)
+                matrix.append(matrix_item)
 
         pose = cls(
             position=position,
@@ -75,21 +94,4 @@ class Pose:
             matrix=matrix,
         )
 
-        pose.additional_properties = d
         return pose
-
-    @property
-    def additional_keys(self) -> list[str]:
-        return list(self.additional_properties.keys())
-
-    def __getitem__(self, key: str) -> Any:
-        return self.additional_properties[key]
-
-    def __setitem__(self, key: str, value: Any) -> None:
-        self.additional_properties[key] = value
-
-    def __delitem__(self, key: str) -> None:
-        del self.additional_properties[key]
-
-    def __contains__(self, key: str) -> bool:
-        return key in self.additional_properties

@@ -8,7 +8,7 @@ from attrs import define as _attrs_define
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.pose_in import PoseIn
+    from ..models.pose import Pose
 
 
 T = TypeVar("T", bound="QueryRequest")
@@ -20,14 +20,15 @@ class QueryRequest:
 
     Attributes:
         map_id (str): The map to query.
-        poses (list[PoseIn] | None | Unset): Poses (root frame).
+        poses (list[Pose] | None | Unset): Poses (root frame): each needs a position (`position` or `matrix`); without a
+            rotation (`orientation`, `rpy` or `matrix`), any orientation (best over the voxel).
         positions (list[list[float]] | None | Unset): Compact form: N×3 positions (m).
         orientations (list[list[float]] | None | Unset): Compact form: N×4 quaternions [x, y, z, w] (omit: any
             orientation).
     """
 
     map_id: str
-    poses: list[PoseIn] | None | Unset = UNSET
+    poses: list[Pose] | None | Unset = UNSET
     positions: list[list[float]] | None | Unset = UNSET
     orientations: list[list[float]] | None | Unset = UNSET
 
@@ -90,12 +91,12 @@ class QueryRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.pose_in import PoseIn  # noqa: PLC0415
+        from ..models.pose import Pose  # noqa: PLC0415
 
         d = dict(src_dict)
         map_id = d.pop("map_id")
 
-        def _parse_poses(data: object) -> list[PoseIn] | None | Unset:
+        def _parse_poses(data: object) -> list[Pose] | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -106,14 +107,14 @@ class QueryRequest:
                 poses_type_0 = []
                 _poses_type_0 = data
                 for poses_type_0_item_data in _poses_type_0:
-                    poses_type_0_item = PoseIn.from_dict(poses_type_0_item_data)
+                    poses_type_0_item = Pose.from_dict(poses_type_0_item_data)
 
                     poses_type_0.append(poses_type_0_item)
 
                 return poses_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(list[PoseIn] | None | Unset, data)
+            return cast(list[Pose] | None | Unset, data)
 
         poses = _parse_poses(d.pop("poses", UNSET))
 

@@ -5,11 +5,11 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.statics_request_reference import StaticsRequestReference
+from ..models.jacobian_reference import JacobianReference
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.statics_request_joint_positions_type_0 import StaticsRequestJointPositionsType0
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="StaticsRequest")
@@ -24,33 +24,29 @@ class StaticsRequest:
             q (list[float] | None | Unset): One value per actuated joint, in the order of GET /robots/{id} (rad for revolute
                 and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is
                 accepted too.
-            joint_positions (None | StaticsRequestJointPositionsType0 | Unset): Joint name → value (rad or m); joints not
-                given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal
-                multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
+            joint_positions (JointPositions | None | Unset): Joint name → value (rad or m); joints not given take their
+                neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader +
+                offset within 1e-9 (see mimic_joints of GET /robots/{id}).
             group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
                 the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
                 seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
             frame (None | str | Unset): Frame; default the end effector (with `group`: the group's tip).
-            reference (StaticsRequestReference | Unset): Axes of the wrench (as for the Jacobian). world: force and moment
-                about the frame origin, world axes | local: frame axes | world_spatial: moment about the world origin. Default:
-                StaticsRequestReference.WORLD.
+            reference (JacobianReference | Unset):
             wrench (list[float] | None | Unset): [fx, fy, fz, mx, my, mz] (N, N·m): the wrench the frame exerts on its
                 environment.
             torques (list[float] | None | Unset): Joint torques/forces in joint order (N·m, N).
     """
 
     q: list[float] | None | Unset = UNSET
-    joint_positions: None | StaticsRequestJointPositionsType0 | Unset = UNSET
+    joint_positions: JointPositions | None | Unset = UNSET
     group: None | str | Unset = UNSET
     frame: None | str | Unset = UNSET
-    reference: StaticsRequestReference | Unset = StaticsRequestReference.WORLD
+    reference: JacobianReference | Unset = UNSET
     wrench: list[float] | None | Unset = UNSET
     torques: list[float] | None | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.statics_request_joint_positions_type_0 import (
-            StaticsRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         q: list[float] | None | Unset
         if isinstance(self.q, Unset):
@@ -64,7 +60,7 @@ class StaticsRequest:
         joint_positions: dict[str, Any] | None | Unset
         if isinstance(self.joint_positions, Unset):
             joint_positions = UNSET
-        elif isinstance(self.joint_positions, StaticsRequestJointPositionsType0):
+        elif isinstance(self.joint_positions, JointPositions):
             joint_positions = self.joint_positions.to_dict()
         else:
             joint_positions = self.joint_positions
@@ -125,9 +121,7 @@ class StaticsRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.statics_request_joint_positions_type_0 import (
-            StaticsRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -148,9 +142,7 @@ class StaticsRequest:
 
         q = _parse_q(d.pop("q", UNSET))
 
-        def _parse_joint_positions(
-            data: object,
-        ) -> None | StaticsRequestJointPositionsType0 | Unset:
+        def _parse_joint_positions(data: object) -> JointPositions | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -158,12 +150,12 @@ class StaticsRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                joint_positions_type_0 = StaticsRequestJointPositionsType0.from_dict(data)
+                joint_positions_type_0 = JointPositions.from_dict(data)
 
                 return joint_positions_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(None | StaticsRequestJointPositionsType0 | Unset, data)
+            return cast(JointPositions | None | Unset, data)
 
         joint_positions = _parse_joint_positions(d.pop("joint_positions", UNSET))
 
@@ -186,11 +178,11 @@ class StaticsRequest:
         frame = _parse_frame(d.pop("frame", UNSET))
 
         _reference = d.pop("reference", UNSET)
-        reference: StaticsRequestReference | Unset
+        reference: JacobianReference | Unset
         if isinstance(_reference, Unset):
             reference = UNSET
         else:
-            reference = StaticsRequestReference(_reference)
+            reference = JacobianReference(_reference)
 
         def _parse_wrench(data: object) -> list[float] | None | Unset:
             if data is None:

@@ -6,6 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.jacobian_reference import JacobianReference
+
 T = TypeVar("T", bound="StaticsResponse")
 
 
@@ -16,8 +18,9 @@ class StaticsResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        reference (str):
-        q (list[float]):
+        reference (JacobianReference):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         wrench (list[float]): [fx, fy, fz, mx, my, mz] (N, N·m).
         torques (list[float]): Jᵀ·F in joint order (N·m, N).
         joint_names (list[str]):
@@ -28,7 +31,7 @@ class StaticsResponse:
 
     robot_id: str
     frame: str
-    reference: str
+    reference: JacobianReference
     q: list[float]
     wrench: list[float]
     torques: list[float]
@@ -43,7 +46,7 @@ class StaticsResponse:
 
         frame = self.frame
 
-        reference = self.reference
+        reference = self.reference.value
 
         q = self.q
 
@@ -85,7 +88,7 @@ class StaticsResponse:
 
         frame = d.pop("frame")
 
-        reference = d.pop("reference")
+        reference = JacobianReference(d.pop("reference"))
 
         q = cast(list[float], d.pop("q"))
 

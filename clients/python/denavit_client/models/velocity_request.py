@@ -5,12 +5,12 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.velocity_request_mode import VelocityRequestMode
-from ..models.velocity_request_reference import VelocityRequestReference
+from ..models.ik_mode import IKMode
+from ..models.twist_reference import TwistReference
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.velocity_request_joint_positions_type_0 import VelocityRequestJointPositionsType0
+    from ..models.joint_positions import JointPositions
 
 
 T = TypeVar("T", bound="VelocityRequest")
@@ -24,40 +24,35 @@ class VelocityRequest:
         q (list[float] | None | Unset): One value per actuated joint, in the order of GET /robots/{id} (rad for revolute
             and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is
             accepted too.
-        joint_positions (None | Unset | VelocityRequestJointPositionsType0): Joint name → value (rad or m); joints not
-            given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal
-            multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}).
+        joint_positions (JointPositions | None | Unset): Joint name → value (rad or m); joints not given take their
+            neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader +
+            offset within 1e-9 (see mimic_joints of GET /robots/{id}).
         group (None | str | Unset): A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group,
             the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the
             seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
         frame (None | str | Unset): Frame; default the end effector (with `group`: the group's tip).
-        reference (VelocityRequestReference | Unset): Axes of the twist: world (origin velocity and angular velocity in
-            world axes, Pinocchio LOCAL_WORLD_ALIGNED) | local (the frame's own axes, LOCAL). Default:
-            VelocityRequestReference.WORLD.
+        reference (TwistReference | Unset):
         joint_velocities (list[float] | None | Unset): Forward: q̇, one per joint in joint order (rad/s, m/s); with
             `group`, one per joint of the group is accepted too (the others at rest).
         twist (list[float] | None | Unset): Inverse: [vx, vy, vz, wx, wy, wz] (m/s, rad/s) to realise.
-        mode (VelocityRequestMode | Unset): Inverse only: task rows to match (position: vx, vy, vz only; orientation:
-            wx, wy, wz only). Default: VelocityRequestMode.POSE.
+        mode (IKMode | Unset):
         singular_threshold (float | Unset): Inverse: σ_min below which damping starts. Default: 0.01.
         max_damping (float | Unset): Inverse: damping λ at an exact singularity. Default: 0.1.
     """
 
     q: list[float] | None | Unset = UNSET
-    joint_positions: None | Unset | VelocityRequestJointPositionsType0 = UNSET
+    joint_positions: JointPositions | None | Unset = UNSET
     group: None | str | Unset = UNSET
     frame: None | str | Unset = UNSET
-    reference: VelocityRequestReference | Unset = VelocityRequestReference.WORLD
+    reference: TwistReference | Unset = UNSET
     joint_velocities: list[float] | None | Unset = UNSET
     twist: list[float] | None | Unset = UNSET
-    mode: VelocityRequestMode | Unset = VelocityRequestMode.POSE
+    mode: IKMode | Unset = UNSET
     singular_threshold: float | Unset = 0.01
     max_damping: float | Unset = 0.1
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.velocity_request_joint_positions_type_0 import (
-            VelocityRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         q: list[float] | None | Unset
         if isinstance(self.q, Unset):
@@ -71,7 +66,7 @@ class VelocityRequest:
         joint_positions: dict[str, Any] | None | Unset
         if isinstance(self.joint_positions, Unset):
             joint_positions = UNSET
-        elif isinstance(self.joint_positions, VelocityRequestJointPositionsType0):
+        elif isinstance(self.joint_positions, JointPositions):
             joint_positions = self.joint_positions.to_dict()
         else:
             joint_positions = self.joint_positions
@@ -146,9 +141,7 @@ class VelocityRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.velocity_request_joint_positions_type_0 import (
-            VelocityRequestJointPositionsType0,  # noqa: PLC0415
-        )
+        from ..models.joint_positions import JointPositions  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -169,9 +162,7 @@ class VelocityRequest:
 
         q = _parse_q(d.pop("q", UNSET))
 
-        def _parse_joint_positions(
-            data: object,
-        ) -> None | Unset | VelocityRequestJointPositionsType0:
+        def _parse_joint_positions(data: object) -> JointPositions | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -179,12 +170,12 @@ class VelocityRequest:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                joint_positions_type_0 = VelocityRequestJointPositionsType0.from_dict(data)
+                joint_positions_type_0 = JointPositions.from_dict(data)
 
                 return joint_positions_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(None | Unset | VelocityRequestJointPositionsType0, data)
+            return cast(JointPositions | None | Unset, data)
 
         joint_positions = _parse_joint_positions(d.pop("joint_positions", UNSET))
 
@@ -207,11 +198,11 @@ class VelocityRequest:
         frame = _parse_frame(d.pop("frame", UNSET))
 
         _reference = d.pop("reference", UNSET)
-        reference: VelocityRequestReference | Unset
+        reference: TwistReference | Unset
         if isinstance(_reference, Unset):
             reference = UNSET
         else:
-            reference = VelocityRequestReference(_reference)
+            reference = TwistReference(_reference)
 
         def _parse_joint_velocities(data: object) -> list[float] | None | Unset:
             if data is None:
@@ -248,11 +239,11 @@ class VelocityRequest:
         twist = _parse_twist(d.pop("twist", UNSET))
 
         _mode = d.pop("mode", UNSET)
-        mode: VelocityRequestMode | Unset
+        mode: IKMode | Unset
         if isinstance(_mode, Unset):
             mode = UNSET
         else:
-            mode = VelocityRequestMode(_mode)
+            mode = IKMode(_mode)
 
         singular_threshold = d.pop("singular_threshold", UNSET)
 

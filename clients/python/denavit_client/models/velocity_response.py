@@ -6,7 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.velocity_response_direction import VelocityResponseDirection
+from ..models.twist_reference import TwistReference
+from ..models.velocity_direction import VelocityDirection
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="VelocityResponse")
@@ -19,9 +20,10 @@ class VelocityResponse:
     Attributes:
         robot_id (str):
         frame (str):
-        reference (str):
-        direction (VelocityResponseDirection):
-        q (list[float]):
+        reference (TwistReference):
+        direction (VelocityDirection):
+        q (list[float]): One value per actuated joint in joint order (GET /robots/{id}): rad for revolute and continuous
+            joints, m for prismatic ones.
         joint_velocities (list[float]): q̇ in joint order (rad/s, m/s).
         twist (list[float]): J·q̇ = [vx, vy, vz, wx, wy, wz] (m/s, rad/s).
         residual (float | None | Unset): Inverse: ‖J q̇ − twist‖ on the task rows.
@@ -31,8 +33,8 @@ class VelocityResponse:
 
     robot_id: str
     frame: str
-    reference: str
-    direction: VelocityResponseDirection
+    reference: TwistReference
+    direction: VelocityDirection
     q: list[float]
     joint_velocities: list[float]
     twist: list[float]
@@ -46,7 +48,7 @@ class VelocityResponse:
 
         frame = self.frame
 
-        reference = self.reference
+        reference = self.reference.value
 
         direction = self.direction.value
 
@@ -103,9 +105,9 @@ class VelocityResponse:
 
         frame = d.pop("frame")
 
-        reference = d.pop("reference")
+        reference = TwistReference(d.pop("reference"))
 
-        direction = VelocityResponseDirection(d.pop("direction"))
+        direction = VelocityDirection(d.pop("direction"))
 
         q = cast(list[float], d.pop("q"))
 

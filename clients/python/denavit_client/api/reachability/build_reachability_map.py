@@ -77,6 +77,11 @@ def _parse_response(
 
         return response_422
 
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+        return response_503
+
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
     else:
@@ -97,7 +102,7 @@ def _build_response(
 def sync_detailed(
     robot_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: BuildRequest,
 ) -> Response[JobResponse | Problem]:
     """Build Reachability Map
@@ -131,7 +136,7 @@ def sync_detailed(
 def sync(
     robot_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: BuildRequest,
 ) -> JobResponse | Problem | None:
     """Build Reachability Map
@@ -160,7 +165,7 @@ def sync(
 async def asyncio_detailed(
     robot_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: BuildRequest,
 ) -> Response[JobResponse | Problem]:
     """Build Reachability Map
@@ -192,7 +197,7 @@ async def asyncio_detailed(
 async def asyncio(
     robot_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: BuildRequest,
 ) -> JobResponse | Problem | None:
     """Build Reachability Map

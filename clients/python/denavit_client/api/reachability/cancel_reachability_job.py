@@ -60,10 +60,20 @@ def _parse_response(
 
         return response_409
 
+    if response.status_code == 413:
+        response_413 = Problem.from_dict(response.json())
+
+        return response_413
+
     if response.status_code == 422:
         response_422 = Problem.from_dict(response.json())
 
         return response_422
+
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+        return response_503
 
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
@@ -86,7 +96,7 @@ def sync_detailed(
     robot_id: str,
     job_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> Response[JobResponse | Problem]:
     """Cancel Reachability Job
 
@@ -123,7 +133,7 @@ def sync(
     robot_id: str,
     job_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> JobResponse | Problem | None:
     """Cancel Reachability Job
 
@@ -155,7 +165,7 @@ async def asyncio_detailed(
     robot_id: str,
     job_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> Response[JobResponse | Problem]:
     """Cancel Reachability Job
 
@@ -190,7 +200,7 @@ async def asyncio(
     robot_id: str,
     job_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> JobResponse | Problem | None:
     """Cancel Reachability Job
 

@@ -53,10 +53,20 @@ def _parse_response(
 
         return response_404
 
+    if response.status_code == 413:
+        response_413 = Problem.from_dict(response.json())
+
+        return response_413
+
     if response.status_code == 422:
         response_422 = Problem.from_dict(response.json())
 
         return response_422
+
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+        return response_503
 
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
@@ -79,7 +89,7 @@ def sync_detailed(
     robot_id: str,
     map_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> Response[Any | Problem]:
     """Delete Reachability Map
 
@@ -113,7 +123,7 @@ def sync(
     robot_id: str,
     map_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> Any | Problem | None:
     """Delete Reachability Map
 
@@ -142,7 +152,7 @@ async def asyncio_detailed(
     robot_id: str,
     map_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> Response[Any | Problem]:
     """Delete Reachability Map
 
@@ -174,7 +184,7 @@ async def asyncio(
     robot_id: str,
     map_id: str,
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
 ) -> Any | Problem | None:
     """Delete Reachability Map
 

@@ -1,6 +1,6 @@
 from http import HTTPStatus
 from io import BytesIO
-from typing import Any, cast
+from typing import Any
 from urllib.parse import quote
 
 import httpx
@@ -29,14 +29,15 @@ def _get_kwargs(
 
 def _parse_response(
     *, client: AuthenticatedClient | Client, response: httpx.Response
-) -> Any | File | Problem | None:
+) -> File | Problem | None:
     if response.status_code == 200:
         response_200 = File(payload=BytesIO(response.content))
 
         return response_200
 
     if response.status_code == 206:
-        response_206 = cast(Any, None)
+        response_206 = File(payload=BytesIO(response.content))
+
         return response_206
 
     if response.status_code == 400:
@@ -49,6 +50,11 @@ def _parse_response(
 
         return response_404
 
+    if response.status_code == 413:
+        response_413 = Problem.from_dict(response.json())
+
+        return response_413
+
     if response.status_code == 416:
         response_416 = Problem.from_dict(response.json())
 
@@ -59,6 +65,11 @@ def _parse_response(
 
         return response_422
 
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+        return response_503
+
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
     else:
@@ -67,7 +78,7 @@ def _parse_response(
 
 def _build_response(
     *, client: AuthenticatedClient | Client, response: httpx.Response
-) -> Response[Any | File | Problem]:
+) -> Response[File | Problem]:
     return Response(
         status_code=HTTPStatus(response.status_code),
         content=response.content,
@@ -81,7 +92,7 @@ def sync_detailed(
     path: str,
     *,
     client: AuthenticatedClient | Client,
-) -> Response[Any | File | Problem]:
+) -> Response[File | Problem]:
     """Get Robot File
 
      A file of a robot's package: what its URDF's mesh URIs name, for viewers.
@@ -110,7 +121,7 @@ def sync_detailed(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Response[Any | File | Problem]
+        Response[File | Problem]
     """
 
     kwargs = _get_kwargs(
@@ -130,7 +141,7 @@ def sync(
     path: str,
     *,
     client: AuthenticatedClient | Client,
-) -> Any | File | Problem | None:
+) -> File | Problem | None:
     """Get Robot File
 
      A file of a robot's package: what its URDF's mesh URIs name, for viewers.
@@ -159,7 +170,7 @@ def sync(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Any | File | Problem
+        File | Problem
     """
 
     return sync_detailed(
@@ -174,7 +185,7 @@ async def asyncio_detailed(
     path: str,
     *,
     client: AuthenticatedClient | Client,
-) -> Response[Any | File | Problem]:
+) -> Response[File | Problem]:
     """Get Robot File
 
      A file of a robot's package: what its URDF's mesh URIs name, for viewers.
@@ -203,7 +214,7 @@ async def asyncio_detailed(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Response[Any | File | Problem]
+        Response[File | Problem]
     """
 
     kwargs = _get_kwargs(
@@ -221,7 +232,7 @@ async def asyncio(
     path: str,
     *,
     client: AuthenticatedClient | Client,
-) -> Any | File | Problem | None:
+) -> File | Problem | None:
     """Get Robot File
 
      A file of a robot's package: what its URDF's mesh URIs name, for viewers.
@@ -250,7 +261,7 @@ async def asyncio(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Any | File | Problem
+        File | Problem
     """
 
     return (

@@ -73,6 +73,11 @@ def _parse_response(
 
         return response_422
 
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+        return response_503
+
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
     else:
@@ -92,7 +97,7 @@ def _build_response(
 
 def sync_detailed(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: DHTableDoc,
 ) -> Response[Problem | RobotDetail]:
     """Import Dh Robot
@@ -136,7 +141,7 @@ def sync_detailed(
 
 def sync(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: DHTableDoc,
 ) -> Problem | RobotDetail | None:
     """Import Dh Robot
@@ -175,7 +180,7 @@ def sync(
 
 async def asyncio_detailed(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: DHTableDoc,
 ) -> Response[Problem | RobotDetail]:
     """Import Dh Robot
@@ -217,7 +222,7 @@ async def asyncio_detailed(
 
 async def asyncio(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: DHTableDoc,
 ) -> Problem | RobotDetail | None:
     """Import Dh Robot

@@ -73,6 +73,11 @@ def _parse_response(
 
         return response_422
 
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+        return response_503
+
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
     else:
@@ -92,7 +97,7 @@ def _build_response(
 
 def sync_detailed(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: PackageUpload,
 ) -> Response[Problem | RobotDetail]:
     """Upload Robot Package
@@ -111,14 +116,16 @@ def sync_detailed(
     ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES`` once unpacked (counted while decompressing).
     Mesh and texture references resolve inside the package: relative paths and
     ``file://<relative path>`` against the description's folder, ``package://<pkg>/…``
-    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of
-    the archive); ``package://example-robot-data/…`` names the catalog's files. A
-    reference that leaves the package, an absolute path, another scheme or a missing file
-    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that
-    cannot be read is a 422 naming it, so a 201 means collisions work. The stored URDF
-    (GET /robots/{robot_id}/urdf) names every file ``package://files/<path in the
-    archive>``, served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF
-    is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
+    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of the
+    archive); ``package://example-robot-data/robots/<folder>/<path>`` names the archive's
+    own copy when it has one (``<path>``, ``<folder>/<path>`` or ``robots/<folder>/<path>``
+    under the description's folder or its nearest parent with one), else the catalog's file.
+    A reference that leaves the package, an absolute path, another scheme or a missing file
+    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that cannot
+    be read is a 422 naming it, so a 201 means collisions work. The stored URDF (GET
+    /robots/{robot_id}/urdf) names every file ``package://files/<path in the archive>``,
+    served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF is checked
+    as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
     form); 409 if the id is taken. Nothing is stored on any refusal.
 
     Args:
@@ -148,7 +155,7 @@ def sync_detailed(
 
 def sync(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: PackageUpload,
 ) -> Problem | RobotDetail | None:
     """Upload Robot Package
@@ -167,14 +174,16 @@ def sync(
     ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES`` once unpacked (counted while decompressing).
     Mesh and texture references resolve inside the package: relative paths and
     ``file://<relative path>`` against the description's folder, ``package://<pkg>/…``
-    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of
-    the archive); ``package://example-robot-data/…`` names the catalog's files. A
-    reference that leaves the package, an absolute path, another scheme or a missing file
-    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that
-    cannot be read is a 422 naming it, so a 201 means collisions work. The stored URDF
-    (GET /robots/{robot_id}/urdf) names every file ``package://files/<path in the
-    archive>``, served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF
-    is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
+    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of the
+    archive); ``package://example-robot-data/robots/<folder>/<path>`` names the archive's
+    own copy when it has one (``<path>``, ``<folder>/<path>`` or ``robots/<folder>/<path>``
+    under the description's folder or its nearest parent with one), else the catalog's file.
+    A reference that leaves the package, an absolute path, another scheme or a missing file
+    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that cannot
+    be read is a 422 naming it, so a 201 means collisions work. The stored URDF (GET
+    /robots/{robot_id}/urdf) names every file ``package://files/<path in the archive>``,
+    served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF is checked
+    as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
     form); 409 if the id is taken. Nothing is stored on any refusal.
 
     Args:
@@ -199,7 +208,7 @@ def sync(
 
 async def asyncio_detailed(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: PackageUpload,
 ) -> Response[Problem | RobotDetail]:
     """Upload Robot Package
@@ -218,14 +227,16 @@ async def asyncio_detailed(
     ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES`` once unpacked (counted while decompressing).
     Mesh and texture references resolve inside the package: relative paths and
     ``file://<relative path>`` against the description's folder, ``package://<pkg>/…``
-    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of
-    the archive); ``package://example-robot-data/…`` names the catalog's files. A
-    reference that leaves the package, an absolute path, another scheme or a missing file
-    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that
-    cannot be read is a 422 naming it, so a 201 means collisions work. The stored URDF
-    (GET /robots/{robot_id}/urdf) names every file ``package://files/<path in the
-    archive>``, served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF
-    is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
+    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of the
+    archive); ``package://example-robot-data/robots/<folder>/<path>`` names the archive's
+    own copy when it has one (``<path>``, ``<folder>/<path>`` or ``robots/<folder>/<path>``
+    under the description's folder or its nearest parent with one), else the catalog's file.
+    A reference that leaves the package, an absolute path, another scheme or a missing file
+    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that cannot
+    be read is a 422 naming it, so a 201 means collisions work. The stored URDF (GET
+    /robots/{robot_id}/urdf) names every file ``package://files/<path in the archive>``,
+    served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF is checked
+    as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
     form); 409 if the id is taken. Nothing is stored on any refusal.
 
     Args:
@@ -253,7 +264,7 @@ async def asyncio_detailed(
 
 async def asyncio(
     *,
-    client: AuthenticatedClient,
+    client: AuthenticatedClient | Client,
     body: PackageUpload,
 ) -> Problem | RobotDetail | None:
     """Upload Robot Package
@@ -272,14 +283,16 @@ async def asyncio(
     ``DENAVIT_MAX_PACKAGE_UNPACKED_BYTES`` once unpacked (counted while decompressing).
     Mesh and texture references resolve inside the package: relative paths and
     ``file://<relative path>`` against the description's folder, ``package://<pkg>/…``
-    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of
-    the archive); ``package://example-robot-data/…`` names the catalog's files. A
-    reference that leaves the package, an absolute path, another scheme or a missing file
-    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that
-    cannot be read is a 422 naming it, so a 201 means collisions work. The stored URDF
-    (GET /robots/{robot_id}/urdf) names every file ``package://files/<path in the
-    archive>``, served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF
-    is checked as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
+    against the package named ``<pkg>`` by a ``package.xml`` (or a top-level folder of the
+    archive); ``package://example-robot-data/robots/<folder>/<path>`` names the archive's
+    own copy when it has one (``<path>``, ``<folder>/<path>`` or ``robots/<folder>/<path>``
+    under the description's folder or its nearest parent with one), else the catalog's file.
+    A reference that leaves the package, an absolute path, another scheme or a missing file
+    is a 422 naming it; every mesh is loaded (STL, COLLADA, OBJ or PLY) and one that cannot
+    be read is a 422 naming it, so a 201 means collisions work. The stored URDF (GET
+    /robots/{robot_id}/urdf) names every file ``package://files/<path in the archive>``,
+    served at GET /robots/{robot_id}/files/<path in the archive>. Then the URDF is checked
+    as in POST /robots/urdf. 413 past ``DENAVIT_MAX_PACKAGE_BYTES`` (the whole
     form); 409 if the id is taken. Nothing is stored on any refusal.
 
     Args:

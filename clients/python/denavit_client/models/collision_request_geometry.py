@@ -1,9 +1,0 @@
-from enum import StrEnum
-
-
-class CollisionRequestGeometry(StrEnum):
-    CONVEX = "convex"
-    MESH = "mesh"
-
-    def __str__(self) -> str:
-        return str(self.value)

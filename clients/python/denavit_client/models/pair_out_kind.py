@@ -1,9 +1,0 @@
-from enum import StrEnum
-
-
-class PairOutKind(StrEnum):
-    ENVIRONMENT = "environment"
-    SELF = "self"
-
-    def __str__(self) -> str:
-        return str(self.value)
