@@ -37,13 +37,13 @@ from denavit_client.models import (
     IKResponse,
     JacobianRequest,
     JacobianResponse,
-    JobResponseStatus,
+    JobStatus,
     ObstacleIn,
-    ObstacleInShape,
+    ObstacleShape,
+    Pose,
     Problem,
     SceneIn,
     SceneOut,
-    Target,
 )
 from denavit_client.session import connect
 from denavit_client.stream import StreamError, open_stream
@@ -125,7 +125,7 @@ def test_ik_round_trip(api) -> None:
     T = np.eye(4)
     T[:3, :3], T[:3, 3] = R, p
     position, orientation = pose_lists(T)
-    body = IKRequest(target=Target(position=position, orientation=orientation), frame=EE)
+    body = IKRequest(target=Pose(position=position, orientation=orientation), frame=EE)
     out = solve_ik.sync(ROBOT, client=api, body=body)
     assert isinstance(out, IKResponse), out
     assert out.success, out
@@ -165,7 +165,7 @@ def test_errors_parse_as_problems(api) -> None:
 
 def test_a_write_needs_no_token_on_a_service_without_one(server: str) -> None:
     """connect() without a token sends no Authorization header; a plain Client works too."""
-    box = ObstacleIn(name="b", shape=ObstacleInShape.SPHERE, radius=0.1)
+    box = ObstacleIn(name="b", shape=ObstacleShape.SPHERE, radius=0.1)
     with connect(server) as client:
         assert "authorization" not in client.get_httpx_client().headers
         made = create_scene.sync(client=client, body=SceneIn(name="no_token", obstacles=[box]))
@@ -191,7 +191,7 @@ def test_text_and_binary_answers_are_read(api) -> None:
     poll_live(f"{url}/robots/{ROBOT}/reachability/jobs/{job.job_id}", lambda j: j["map_id"])
     done = get_reachability_job.sync(ROBOT, job.job_id, client=api)
     assert done is not None and not isinstance(done, Problem)
-    assert done.status == JobResponseStatus.DONE and isinstance(done.map_id, str)
+    assert done.status == JobStatus.DONE and isinstance(done.map_id, str)
     png = get_reachability_slice.sync(ROBOT, done.map_id, client=api, z=0.3, scale=2)
     assert isinstance(png, File), png
     data = png.payload.read()
@@ -210,7 +210,7 @@ def test_the_stream_answers_as_the_http_routes(api, server: str) -> None:
         pose = http.poses[EE]
         # Binary frames: the end effector's pose, then an IK step back to it.
         np.testing.assert_array_equal(stream.fk_pose(q), [*pose.position, *pose.orientation])
-        target = Target(position=pose.position, orientation=pose.orientation)
+        target = pose
         ik = stream.ik(IKRequest(target=target, max_iterations=200))
         assert ik.success
         ok, q_ik, position_error, _ = stream.ik_step(pose.position, pose.orientation)

@@ -12,8 +12,11 @@ for, and each other (both clients must see the same answers).
 from __future__ import annotations
 
 import json
+import re
+import shutil
 import subprocess
 import sys
+import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 from xml.etree import ElementTree
@@ -98,3 +101,51 @@ def test_the_typescript_lab_runs_against_a_live_server(lab, tsc, python_results)
     # Both clients sent the same requests: the same answers.
     for key in ("ik_branches", "path_points", "collision_pairs", "package_groups"):
         assert results[key] == python_results[key], key
+
+
+DOC = ROOT / "docs" / "clients.md"
+DOC_ADDRESS = "http://127.0.0.1:8000"
+
+
+def _ts_blocks() -> list[str]:
+    """The ```ts blocks of docs/clients.md (the docs test leaves them to this module)."""
+    text = DOC.read_text(encoding="utf-8")
+    return re.findall(r"^```ts\n(.*?)^```\n", text, flags=re.M | re.S)
+
+
+def test_the_typescript_examples_of_the_guide_compile_and_run(lab, tmp_path) -> None:
+    """Every ```ts block of docs/clients.md, as printed but for the server's address, is
+    compiled by ``tsc --strict`` beside the committed types and run by node against the live
+    server; it must exit 0 (a block throws when an answer is not what it expects)."""
+    url, _ = lab
+    blocks = _ts_blocks()
+    assert blocks, "docs/clients.md has no ```ts example"
+    assert (TS_DIR / "node_modules").is_dir(), "run `make typescript` (npm ci) first"
+    # Inside clients/typescript, so that node_modules resolves; removed afterwards.
+    work = Path(tempfile.mkdtemp(prefix=".doc-examples-", dir=TS_DIR))
+    try:
+        src = work / "src"
+        src.mkdir()
+        shutil.copy(TS_DIR / "src" / "schema.d.ts", src / "schema.d.ts")
+        names = []
+        for i, block in enumerate(blocks):
+            assert DOC_ADDRESS in block, f"block {i} does not call {DOC_ADDRESS}"
+            (src / f"example{i}.ts").write_text(block.replace(DOC_ADDRESS, url))
+            names.append(f"example{i}")
+        config = {
+            "extends": "../tsconfig.json",
+            "compilerOptions": {"outDir": "dist", "rootDir": "src"},
+            "include": ["src"],
+        }
+        (work / "tsconfig.json").write_text(json.dumps(config))
+        tsc = "node ../node_modules/typescript/bin/tsc -p tsconfig.json --strict --noEmitOnError"
+        done = subprocess.run(tsc.split(), cwd=work, capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stdout + done.stderr
+        (work / "dist" / "package.json").write_text('{"type": "module"}')
+        for name in names:
+            run = subprocess.run(
+                ["node", f"dist/{name}.js"], cwd=work, capture_output=True, text=True, timeout=300
+            )
+            assert run.returncode == 0, f"{name}: {run.stdout}{run.stderr}"
+    finally:
+        shutil.rmtree(work, ignore_errors=True)

@@ -35,16 +35,15 @@ from denavit_client.models import (
     IKRequest,
     IKResponse,
     JobResponse,
-    JobResponseStatus,
+    JobStatus,
     LineSegment,
     ObstacleIn,
-    ObstacleInShape,
-    ObstaclePose,
+    ObstacleShape,
     PackageUpload,
     PathRequest,
+    Pose,
     Problem,
     SceneIn,
-    Target,
 )
 from denavit_client.session import connect
 from denavit_client.types import File
@@ -88,8 +87,7 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
 
         # 2. FK, 3. IK fed with FK's answer pose.
         pose = fk(client, Q0).poses[EE]
-        # pose round-trip: with one pose schema in and out this is `target = pose`.
-        target = Target(position=pose.position, orientation=pose.orientation)
+        target = pose  # FK's answer is an IK target as it is
         ik: IKResponse = answer(
             solve_ik.sync(
                 ROBOT,
@@ -104,8 +102,8 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
         check(out["ik_position_error"] < 1e-4, "the IK solution does not reach FK's pose")
 
         # 4. A Cartesian line: 10 cm along x from the IK solution, orientation kept.
-        end = [pose.position[0] + 0.1, pose.position[1], pose.position[2]]
-        line = LineSegment(type_="line", to=Target(position=end, orientation=pose.orientation))
+        end = [float(v) for v in pose_matrix(pose)[:3, 3] + [0.1, 0.0, 0.0]]
+        line = LineSegment(type_="line", to=Pose(position=end, orientation=pose.orientation))
         path = answer(
             solve_ik_path.sync(ROBOT, client=client, body=PathRequest(start=ik.q, segments=[line]))
         )
@@ -132,9 +130,9 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
         # 6. A scene with a box around the Panda's base, and a collision query against it.
         box = ObstacleIn(
             name="pedestal",
-            shape=ObstacleInShape.BOX,
+            shape=ObstacleShape.BOX,
             size=[0.3, 0.3, 0.2],
-            pose=ObstaclePose(position=[0.0, 0.0, 0.1], orientation=[0.0, 0.0, 0.0, 1.0]),
+            pose=Pose(position=[0.0, 0.0, 0.1], orientation=[0.0, 0.0, 0.0, 1.0]),
         )
         scene = answer(
             create_scene.sync(
@@ -156,12 +154,12 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                 ROBOT, client=client, body=BuildRequest(samples=2000, voxel_size=0.1)
             )
         )
-        while job.status in (JobResponseStatus.QUEUED, JobResponseStatus.RUNNING):
+        while job.status in (JobStatus.QUEUED, JobStatus.RUNNING):
             time.sleep(0.2)
             job = answer(get_reachability_job.sync(ROBOT, job.job_id, client=client))
         out["reachability"] = str(job.status)
         out["reachability_samples"] = job.progress.samples_done
-        check(job.status == JobResponseStatus.DONE, f"the build ended {job.status}: {job.error}")
+        check(job.status == JobStatus.DONE, f"the build ended {job.status}: {job.error}")
     print(json.dumps(out))
     return out
 
