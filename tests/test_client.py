@@ -133,10 +133,24 @@ def test_ik_round_trip(api) -> None:
     p, R = fk(api, q_true)
     T = np.eye(4)
     T[:3, :3], T[:3, 3] = R, p
-    body = models.IKRequest(target=models.Target(matrix=T.tolist()), frame=EE, timeout_ms=500.0)
+    body = models.IKRequest(target=models.Pose(matrix=T.tolist()), frame=EE, timeout_ms=500.0)
     out = solve.sync(ROBOT, client=api, body=body)
     assert isinstance(out, models.IKResponse), out
     assert out.success, out
+    p_sol, R_sol = fk(api, np.array(out.q))
+    assert np.linalg.norm(p_sol - p) <= 1e-5
+    assert _rotation_angle(R_sol @ R.T) <= 1e-5
+    # FK's answer, the generated Pose object itself, is an IK target as is.
+    compute_fk = _mod("api.kinematics.compute_fk")
+    fk_out = compute_fk.sync(
+        ROBOT, client=api, body=models.FKRequest(q=q_true.tolist(), frames=[EE])
+    )
+    assert isinstance(fk_out, models.FKResponse), fk_out
+    pose = fk_out.poses[EE]
+    assert isinstance(pose, models.Pose)
+    body = models.IKRequest(target=pose, frame=EE, timeout_ms=500.0)
+    out = solve.sync(ROBOT, client=api, body=body)
+    assert isinstance(out, models.IKResponse) and out.success, out
     p_sol, R_sol = fk(api, np.array(out.q))
     assert np.linalg.norm(p_sol - p) <= 1e-5
     assert _rotation_angle(R_sol @ R.T) <= 1e-5
