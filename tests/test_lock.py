@@ -7,6 +7,7 @@ agree with pyproject.toml's == pins and with each other is.
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import tomllib
@@ -89,8 +90,10 @@ def test_make_run_installs_the_runtime_lock_only_in_its_own_venv() -> None:
     lock and the project into ``.venv-run``, then ``python -m app`` from there; never the
     development lock or ``.venv`` (so `make run` and `make test` work in either order).
     tests/test_runtime_lock_serves.py checks that this lock is enough to serve."""
+    # Not as a sub-make of `make test` (which would add "Entering directory" lines).
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS")}
     out = subprocess.run(
-        ["make", "-n", "-B", "run"], cwd=ROOT, capture_output=True, text=True, check=True
+        ["make", "-n", "-B", "run"], cwd=ROOT, capture_output=True, text=True, check=True, env=env
     ).stdout
     lines = out.splitlines()
     assert "requirements-dev.lock" not in out and ".venv/" not in out, out
