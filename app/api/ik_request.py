@@ -24,11 +24,13 @@ from app.kinematics.ik.ranking import clearance_function
 from app.kinematics.models import RobotModel
 
 
-def target_of(target: Pose, mode: str, field: str = "target") -> pin.SE3:
-    """The target's placement (validated by the core, naming ``field``; the missing part of
-    mode position or orientation is the identity's)."""
+def target_of(
+    target: Pose, mode: str, field: str = "target", default: pin.SE3 | None = None
+) -> pin.SE3:
+    """The target's placement (validated by the core, naming ``field``; the part mode
+    position or orientation leaves out is ``default``'s, the identity's without one)."""
     return target_placement(
-        target.position, target.orientation, target.matrix, mode, field, rpy=target.rpy
+        target.position, target.orientation, target.matrix, mode, field, target.rpy, default
     )
 
 

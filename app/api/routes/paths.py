@@ -17,6 +17,7 @@ from app.api.ik_request import (
     collisions_of,
     options_of,
     rng_of,
+    target_of,
 )
 from app.api.limits import check_budget, check_request_budget
 from app.api.offload import offload_cancellable
@@ -39,12 +40,7 @@ router = APIRouter(prefix="/robots/{robot_id}", tags=["inverse kinematics"])
 def _pose(target: Pose, mode: str, previous: pin.SE3, field: str) -> pin.SE3:
     """A path pose: the target, its missing orientation (mode ``position``) or position (mode
     ``orientation``) taken from the previous pose of the path."""
-    return target.placement(
-        field,
-        need_position=mode != "orientation",
-        need_rotation=mode != "position",
-        need=f"for mode {mode!r}",
-    ).se3(previous)
+    return target_of(target, mode, field, previous)
 
 
 def _path(body: PathRequest, start: pin.SE3) -> CartesianPath:

@@ -190,6 +190,7 @@ def target_placement(
     mode: str,
     field: str = "target",
     rpy: Sequence[float] | None = None,
+    default: pin.SE3 | None = None,
 ) -> pin.SE3:
     """An IK target as a Pinocchio SE3, validated by :func:`~app.kinematics.placement.placement`
     (redundant components must agree); components the mode ignores may be omitted.
@@ -201,9 +202,12 @@ def target_placement(
         4×4 homogeneous transform, in the root frame; any subset that agrees.
     mode
         The IK mode: ``pose`` needs a position and a rotation, ``position`` a position,
-        ``orientation`` a rotation (the missing part is the identity's).
+        ``orientation`` a rotation (the missing part is ``default``'s).
     field
         The wire name of the target (``target``, ``targets.3``) for error messages.
+    default
+        Where the part a mode does not need comes from (a path's previous pose); the
+        identity by default.
     """
     return placement(
         position,
@@ -214,7 +218,7 @@ def target_placement(
         need_position=mode != "orientation",
         need_rotation=mode != "position",
         need=f"for mode {mode!r}",
-    ).se3()
+    ).se3(default)
 
 
 def seed_configuration(
