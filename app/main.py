@@ -34,7 +34,7 @@ from app.api.state import open_services
 from app.kinematics.ik.warmup import warm_up as warm_up_ik
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.xmldoc import XmlLimits
-from app.middleware import openapi, openapi_content
+from app.middleware import openapi
 from app.middleware.body_limit import BodyLimitMiddleware
 from app.middleware.guard import ErrorGuardMiddleware
 from app.middleware.methods import MethodsMiddleware
@@ -158,7 +158,6 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(metrics.router)
     app.include_router(viewer.router)  # GET /viewer (not in the OpenAPI document)
     openapi.install(app)  # error responses documented as sent (problem+json)
-    openapi_content.install(app)  # binary answers (PNG, files) typed as binary for clients
     docs_pages.install(app)  # /docs and /redoc, offline
     static_files.mount(app)  # their scripts and styles, from the package
     # add_middleware puts each new one outside the previous ones.

@@ -17,7 +17,9 @@ operation, whichever router defined it:
 Then :func:`app.middleware.openapi_document.complete` adds the statuses the middleware
 answers on any operation, the response headers, ``security`` (optional bearer on exactly
 the guarded operations, ``[]`` on the others), ``servers``, the license and the tags, and
-:func:`app.middleware.openapi_examples.add_examples` the recorded examples.
+:func:`app.middleware.openapi_content.binary_responses` types binary answers (images,
+files) as binary strings, and :func:`app.middleware.openapi_examples.add_examples` adds the
+recorded examples.
 
 Schemathesis (tests/test_schemathesis.py) checks the responses against this schema.
 """
@@ -35,6 +37,7 @@ from app.api.body import EXTRA_SCHEMAS
 from app.api.errors import Problem
 from app.api.security import require_token
 from app.middleware.methods import RouteTable
+from app.middleware.openapi_content import binary_responses
 from app.middleware.openapi_document import BEARER, complete
 from app.middleware.openapi_examples import add_examples
 
@@ -143,7 +146,7 @@ def install(app: FastAPI) -> None:
             guarded = guarded_operations(app)
             schema = document_errors(generate(), guarded, EXTRA_SCHEMAS)
             schema = complete(schema, RouteTable(app.routes), guarded)
-            app.openapi_schema = add_examples(schema)
+            app.openapi_schema = add_examples(binary_responses(schema))
         return app.openapi_schema
 
     app.openapi = openapi  # type: ignore[method-assign]

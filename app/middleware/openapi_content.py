@@ -13,8 +13,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from fastapi import FastAPI
-
 #: The schema of a body of raw bytes.
 BINARY = {"type": "string", "format": "binary"}
 
@@ -35,16 +33,3 @@ def binary_responses(schema: dict[str, Any]) -> dict[str, Any]:
                     if is_binary(media_type):
                         content["schema"] = dict(BINARY)
     return schema
-
-
-def install(app: FastAPI) -> None:
-    """Apply :func:`binary_responses` to the document the app serves (after
-    :func:`app.middleware.openapi.install`, whose document it rewrites once)."""
-    inner = app.openapi
-
-    def openapi() -> dict[str, Any]:
-        if app.openapi_schema is None:
-            app.openapi_schema = binary_responses(inner())
-        return app.openapi_schema
-
-    app.openapi = openapi  # type: ignore[method-assign]

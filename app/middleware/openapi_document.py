@@ -310,15 +310,13 @@ def complete(schema: dict[str, Any], table: RouteTable, guarded: set[str]) -> di
 
 
 def _fill_schemas(content: dict[str, Any]) -> None:
-    """Give a media type without a schema one: a YAML answer its JSON sibling's (the same
-    document), a binary one (an image, a file) a binary string."""
+    """Give a YAML answer without a schema its JSON sibling's (the same document); binary
+    answers are typed by :func:`app.middleware.openapi_content.binary_responses`."""
     for media, entry in content.items():
         if entry.get("schema"):
             continue
         if "yaml" in media and "schema" in content.get("application/json", {}):
             entry["schema"] = _copy(content["application/json"]["schema"])
-        elif media.startswith("image/") or media == "application/octet-stream":
-            entry["schema"] = {"type": "string", "format": "binary"}
 
 
 def _copy(value: Any) -> Any:
