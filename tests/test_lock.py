@@ -150,3 +150,19 @@ def test_the_runtime_lock_holds_nothing_only_the_omitted_need() -> None:
         assert package in direct or via[package] & set(runtime), (
             f"{package} is in {RUNTIME.name} for omitted packages only: add it to with-cut"
         )
+
+
+def test_the_image_allowlist_names_runtime_packages_each_with_a_reason() -> None:
+    """.ci/image-allowlist.txt (what the image keeps unimported; the container check fails on
+    any other never-imported distribution): each line a runtime-lock package and a reason,
+    none of them one the runtime lock omits."""
+    runtime = LOCKS[RUNTIME.name]
+    omitted = set(OMITTED["cut"]) | set(OMITTED["with-cut"])
+    lines = (ROOT / ".ci" / "image-allowlist.txt").read_text().splitlines()
+    entries = [line for line in lines if line.strip() and not line.startswith("#")]
+    assert entries
+    for line in entries:
+        name, _, reason = line.partition("#")
+        package = canonical(name.strip())
+        assert package in runtime and package not in omitted, line
+        assert len(reason.strip()) > 20, f"{package}: give the reason it stays"
