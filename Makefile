@@ -31,9 +31,13 @@ BUILD_REQUIRES = $(BIN)/python -c 'import tomllib; \
 	print(*tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"], sep="\n")'
 UV_COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes \
 	--annotation-style line
+# The runtime lock omits what [tool.denavit.runtime-lock] names (never imported: see there).
+RT_OMIT = $(BIN)/python -c 'import tomllib; \
+	t = tomllib.load(open("pyproject.toml", "rb"))["tool"]["denavit"]["runtime-lock"]; \
+	print(*(f"--no-emit-package={p}" for p in t["cut"] + t["with-cut"]))'
 lock: install
 	$(BUILD_REQUIRES) | $(UV_COMPILE) pyproject.toml - --extra test -o $(LOCK)
-	$(BUILD_REQUIRES) | $(UV_COMPILE) pyproject.toml - -c $(LOCK) -o $(RT_LOCK)
+	$(BUILD_REQUIRES) | $(UV_COMPILE) pyproject.toml - -c $(LOCK) $$($(RT_OMIT)) -o $(RT_LOCK)
 
 # The production image: docker when its engine answers, else podman.
 image:

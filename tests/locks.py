@@ -34,3 +34,22 @@ def parse_lock(path: Path) -> dict[str, tuple[str, list[str]]]:
             assert current is not None, f"{path.name}: {line!r} before any requirement"
             entries[current][1].extend(re.findall(r"--hash=sha256:([0-9a-f]{64})", line))
     return entries
+
+
+def parse_via(path: Path) -> dict[str, set[str]]:
+    """{name: names of the locked packages that require it} from the ``# via`` annotations of
+    a `uv pip compile --annotation-style line` file (``-c``/``-r`` sources and
+    ``denavit (pyproject.toml)`` left out)."""
+    via: dict[str, set[str]] = {}
+    current: str | None = None
+    for line in path.read_text().splitlines():
+        requirement = re.match(r"^([A-Za-z0-9_.-]+)==", line)
+        if requirement:
+            current = canonical(requirement[1])
+            via[current] = set()
+        elif current and line.strip().startswith("# via "):
+            for source in line.strip()[len("# via ") :].split(","):
+                source = source.strip()
+                if re.fullmatch(r"[A-Za-z0-9_.-]+", source):
+                    via[current].add(canonical(source))
+    return via

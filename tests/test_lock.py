@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.locks import DEV, RUNTIME, canonical, parse_lock
+from tests.locks import DEV, RUNTIME, canonical, parse_lock, parse_via
 
 ROOT = Path(__file__).resolve().parents[1]
 PYPROJECT = tomllib.loads((ROOT / "pyproject.toml").read_text())
@@ -32,6 +32,7 @@ def pins(requirements: list[str]) -> dict[str, str]:
 
 
 LOCKS = {path.name: parse_lock(path) for path in (RUNTIME, DEV)}
+OMITTED = PYPROJECT["tool"]["denavit"]["runtime-lock"]
 
 
 @pytest.mark.parametrize("name", sorted(LOCKS))
@@ -103,3 +104,65 @@ def test_make_run_installs_the_runtime_lock_only_in_its_own_venv() -> None:
         for line in lines
     ), out
     assert lines[-1].endswith(".venv-run/bin/python -m app"), out
+
+
+def test_the_omitted_packages_are_in_the_dev_lock_only() -> None:
+    """[tool.denavit.runtime-lock]: each name a locked development package, none in the
+    runtime lock, and the runtime lock's own header says `make lock` left each out."""
+    runtime, dev = LOCKS[RUNTIME.name], LOCKS[DEV.name]
+    header = RUNTIME.read_text().split("\n", 2)[1]
+    for package in OMITTED["cut"] + OMITTED["with-cut"]:
+        assert canonical(package) == package, package
+        assert package in dev, f"{package} is not in {DEV.name}: nothing to omit"
+        assert package not in runtime, f"{package} is still in {RUNTIME.name}"
+        assert f"--no-emit-package={package}" in header, f"`make lock` does not omit {package}"
+    assert "matplotlib" in OMITTED["cut"]
+
+
+def test_each_cut_is_a_declared_dependency_of_a_runtime_package() -> None:
+    """A `cut` package is required by a package the runtime lock keeps (toppra declares
+    matplotlib): the lock leaves out a real dependency, on purpose."""
+    runtime, via = LOCKS[RUNTIME.name], parse_via(DEV)
+    for package in OMITTED["cut"]:
+        assert via[package] & set(runtime), f"{package}: no runtime package requires it"
+
+
+def test_omitted_with_the_cut_means_needed_by_nothing_kept() -> None:
+    """A `with-cut` package is required only by omitted or development-only packages, and by
+    at least one omitted one: nothing the runtime lock keeps declares it (else leaving it
+    out would break that package)."""
+    runtime, via = LOCKS[RUNTIME.name], parse_via(DEV)
+    omitted = set(OMITTED["cut"]) | set(OMITTED["with-cut"])
+    for package in OMITTED["with-cut"]:
+        kept = via[package] & set(runtime)
+        assert not kept, f"{package} is required by {sorted(kept)}, which the runtime lock keeps"
+        assert via[package] & omitted, f"{package}: required by no omitted package"
+
+
+def test_the_runtime_lock_holds_nothing_only_the_omitted_need() -> None:
+    """Every runtime-lock entry is a direct runtime requirement (pyproject.toml's dependencies
+    or the build backend) or required by another entry it keeps: leaving out a `cut` package
+    leaves none of its own dependencies behind unlisted."""
+    runtime, via = LOCKS[RUNTIME.name], parse_via(RUNTIME)
+    direct = set(pins(PYPROJECT["project"]["dependencies"]))
+    direct |= set(pins(PYPROJECT["build-system"]["requires"]))
+    for package in runtime:
+        assert package in direct or via[package] & set(runtime), (
+            f"{package} is in {RUNTIME.name} for omitted packages only: add it to with-cut"
+        )
+
+
+def test_the_image_allowlist_names_runtime_packages_each_with_a_reason() -> None:
+    """.ci/image-allowlist.txt (what the image keeps unimported; the container check fails on
+    any other never-imported distribution): each line a runtime-lock package and a reason,
+    none of them one the runtime lock omits."""
+    runtime = LOCKS[RUNTIME.name]
+    omitted = set(OMITTED["cut"]) | set(OMITTED["with-cut"])
+    lines = (ROOT / ".ci" / "image-allowlist.txt").read_text().splitlines()
+    entries = [line for line in lines if line.strip() and not line.startswith("#")]
+    assert entries
+    for line in entries:
+        name, _, reason = line.partition("#")
+        package = canonical(name.strip())
+        assert package in runtime and package not in omitted, line
+        assert len(reason.strip()) > 20, f"{package}: give the reason it stays"

@@ -64,6 +64,9 @@ def development_only_modules() -> set[str]:
 def test_development_only_packages_are_found() -> None:
     blocked = development_only_modules()
     assert {"pytest", "playwright", "schemathesis", "httpx", "hypothesis"} <= blocked
+    # What the runtime lock leaves out of the dependencies' own ([tool.denavit.runtime-lock]):
+    # toppra's matplotlib and the rest, so the server below serves (timing included) without.
+    assert {"matplotlib", "PIL", "fontTools", "kiwisolver", "defusedxml"} <= blocked
     assert not {"app", "fastapi", "pinocchio", "numpy", "numba", "uvicorn"} & blocked
 
 
@@ -93,6 +96,15 @@ def test_the_runtime_lock_is_enough_to_serve(tmp_path: Path) -> None:
             hit = c.post("/robots/panda/collisions", json={"obstacles": [ball]})
             assert hit.status_code == 200 and hit.json()["environment_collision"], hit.text
             assert c.post("/robots/ur5/jacobian", json={}).status_code == 200
+            # Timing imports toppra, whose matplotlib the runtime lock leaves out.
+            start = [0.3, -1.1, 1.4, -0.6, 1.2, 0.4]
+            tip = c.post("/robots/ur5/fk", json={"q": start}).json()["poses"]["tool0"]
+            x, y, z = tip["position"]
+            moved = {"position": [x, y + 0.05, z - 0.05], "orientation": tip["orientation"]}
+            body = {"start": start, "waypoints": [moved], "random_seed": 0, "timing": {}}
+            path = c.post("/robots/ur5/ik/path", json=body)
+            assert path.status_code == 200, path.text
+            assert path.json()["fraction"] == 1.0 and path.json()["timing"], path.text
             dh = c.get("/robots/puma560/dh")
             assert dh.status_code == 200, dh.text
             archive = zip_bytes({"robot.urdf": TINY_URDF.encode()})
