@@ -156,6 +156,25 @@ class LocalSolver:
             return status, None, 0.0, 0.0, n, 0.0, 0.0
         return status, q.copy(), float(out[0]), float(out[1]), n, float(out[3]), float(out[4])
 
+    def check(
+        self, q_prev: np.ndarray, q: np.ndarray, target: pin.SE3
+    ) -> tuple[int, np.ndarray, float, float]:
+        """The compiled checks alone (:func:`app.kinematics.paths.point_kernel.checks`) of
+        the candidate wire configuration ``q`` from ``q_prev`` towards ``target``
+        (:meth:`prepare` first): the status, ``q`` wrapped, and the errors (m, rad; NaN
+        when the check stopped before the forward kinematics)."""
+        pc = self.compiled
+        assert pc is not None, "prepare() first"
+        qw = np.array(q, dtype=np.float64, order="C")
+        err = np.full(2, np.nan)
+        args = (
+            qw, np.ascontiguousarray(q_prev, dtype=np.float64), pc,
+            np.array(target.rotation, dtype=np.float64, order="C"),
+            np.array(target.translation, dtype=np.float64, order="C"), self._label, err,
+        )  # fmt: skip
+        status = int(jit.direct(point_kernel.checks, *args)(*args))
+        return status, qw, float(err[0]), float(err[1])
+
     def residuals_at(self, qa: np.ndarray, target: pin.SE3) -> tuple[float, float]:
         """Position and rotation error (m, rad) of the frame at the chain configuration
         ``qa`` (k,) against ``target``, by the compiled forward kinematics (:meth:`prepare`
