@@ -16,8 +16,8 @@ import pinocchio as pin
 import pytest
 
 from app.kinematics.ik.search import joint_distance
-from app.kinematics.paths.follow import PathOptions, follow
 from app.kinematics.paths import point_kernel
+from app.kinematics.paths.follow import PathOptions, follow
 from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import CartesianPath, Line
 from bench._lines import random_lines
