@@ -244,15 +244,17 @@ def _wrist_in_chain_frame(
 ) -> np.ndarray:
     """The wrist point (given in Pinocchio's frame of joint ``pin_id``, the fifth moving
     joint) in the chain constants' frame of that joint (z along its axis), from both
-    placements at the zero configuration."""
+    placements at one configuration (a generic one: any gives the same point)."""
     model, k = robot.model, ch.k
     data = model.createData()
-    pin.forwardKinematics(model, data, robot.to_pin(np.zeros(robot.n)))
+    qa = 0.3 + 0.1 * np.arange(k)
+    q = np.zeros(robot.n)
+    q[ch.active] = qa
+    pin.forwardKinematics(model, data, robot.to_pin(q))
     w0 = data.oMi[pin_id].act(np.asarray(wrist, dtype=float))
     # frames() applies joint 5's placement (R5, p5) to a point: p5 from 0, R5's columns
     # from the unit vectors
     R, p, z, o = np.empty((3, 3)), np.empty(3), np.empty((k, 3)), np.empty((k, 3))
-    qa = np.zeros(k)
     placed = []
     for u in (np.zeros(3), *np.eye(3)):
         w = np.empty(3)
