@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 import pinocchio as pin
 import pytest
@@ -246,3 +247,19 @@ def test_segment_pose_matches_pose_at() -> None:
             target = path.target_at(s)
             np.testing.assert_array_equal(target.R, T.rotation)
             np.testing.assert_array_equal(target.p, T.translation)
+
+
+def test_warm_up_compiles_the_signatures_the_solver_uses(registry) -> None:
+    """warm_up() compiles step() for exactly the argument types LocalSolver passes (so a
+    warmed process never compiles on a path request)."""
+    pk.warm_up()
+    robot, ch, _, solver = _setup(registry, "ur5")
+    line = random_lines(robot, "tool0", 1, seed=3, checks=2)[0]
+    assert solver.prepare(line.q0, branch_label(robot, ch, line.q0), 0.1)
+    path = CartesianPath.from_segments(line.start, [Line(line.end)])
+    T = path.target_at(0.5)
+    piece, u = path.piece_at(0.25)
+    args = (line.q0, solver.compiled, T.R, T.p, 3, piece, u, np.empty(robot.n), np.empty(5))
+    warm = pk.warm_up_arguments()
+    assert [numba.typeof(a) for a in args] == [numba.typeof(a) for a in warm]
+    assert tuple(numba.typeof(a) for a in warm) in pk.step.signatures

@@ -13,8 +13,11 @@ only when
 The first attempt at a waypoint is the local solve of :mod:`.local`: one compiled damped
 least-squares attempt from the previous point (full pose; a few iterations), its answer
 re-checked independently (a separate forward kinematics against the waypoint within the IK
-tolerance, the joint limits, and the guards above); where it fails, the Cartesian step is
-halved (at most :data:`MAX_BISECT` times) with local attempts only. When even that fails,
+tolerance, the joint limits, and the guards above; on chains the compiled kernel supports
+the attempt and every check but the caller's ``accept`` are one compiled call,
+:mod:`.point_kernel`, which also measures the deviation at the middle of the step); where
+it fails, the Cartesian step is halved (at most :data:`MAX_BISECT` times) with local
+attempts only. When even that fails,
 :func:`app.kinematics.ik.solve` takes over with the guards *inside* the solver (as its
 ``accept`` predicate, so a restart that lands on another branch is dropped and the search
 goes on): first with a local budget (at most :data:`LOCAL_ITERATIONS` Jacobian evaluations,

@@ -277,3 +277,39 @@ def step(q_prev, pc, Rt, pt, label, piece, u, q, out):  # pragma: no cover
     out[3] = dev[0]
     out[4] = dev[1]
     return OK
+
+
+def warm_up_arguments() -> tuple:
+    """Arguments of :func:`step` of the types :mod:`.local` passes (a dummy one-joint
+    chain, 1 wire joint): what :func:`warm_up` compiles for."""
+    from app.kinematics.paths.pose_kernel import PieceArrays
+
+    k = n = 1
+    chain = ChainConstants(
+        np.ascontiguousarray(np.eye(3)[None]), np.zeros((k, 3)), np.zeros(k, dtype=np.bool_),
+        np.eye(3), np.zeros(3), np.full(k, -1.0), np.full(k, 1.0), np.zeros(k, dtype=np.bool_),
+    )  # fmt: skip
+    step_p = StepParameters(0.01, 1e-10, 0.2, 100.0, 1e-8, 2.0, 0.81, 2, 20)
+    pc = PointConstants(
+        chain, step_p, np.zeros(k, dtype=np.int64), np.full(n, -1.0), np.full(n, 1.0),
+        np.zeros(n, dtype=np.bool_), np.zeros(3), NO_LABELS, False, False, False, False,
+        1e-6, 1e-6, 0.1, 1,
+    )  # fmt: skip
+    z3, eye = np.zeros(3), np.eye(3)
+    piece = PieceArrays(
+        False, z3, z3, z3, z3, z3, 0.0, 0.0, eye, z3, False, eye, z3, False, 1.0, eye, z3,
+        eye, z3,
+    )  # fmt: skip
+    return (np.zeros(n), pc, eye, z3, NO_LABELS, piece, 0.5, np.zeros(n), np.zeros(5))
+
+
+def warm_up() -> None:
+    """Compile (or load from the cache) :func:`step`, :func:`checks`, :func:`label_code`
+    and :func:`pose_residuals` once, with the argument types :mod:`.local` passes, so that
+    the first path does not wait for the compiler (for a caller's start-up)."""
+    args = warm_up_arguments()
+    step(*args)
+    q, pc, eye, z3 = args[0], args[1], args[2], args[3]
+    checks(q.copy(), q, pc, eye, z3, NO_LABELS, np.zeros(2))
+    label_code(q, pc)
+    pose_residuals(np.zeros(1), pc.chain, eye, z3, np.zeros(2))
