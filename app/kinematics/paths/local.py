@@ -82,7 +82,8 @@ class LocalSolver:
         # the attempt's cap is this solver's, not the search's
         self._step = step_parameters(p, attempt_cap=cap)
         self._flags = (redundant and p.null_gain > 0.0, p.clamp and redundant)
-        self._tol2 = (float(tolerance[0]) ** 2, float(tolerance[1]) ** 2)
+        self._tol = (float(tolerance[0]), float(tolerance[1]))
+        self._tol2 = (self._tol[0] ** 2, self._tol[1] ** 2)
         self._best = np.empty(1)
         self._best_q = np.empty(chain.k)
         #: The compiled point's constants once :meth:`prepare` accepted them, else None.
@@ -103,8 +104,7 @@ class LocalSolver:
         null_on, clamp = self._flags
         return point_kernel.PointConstants(
             self._chain, self._step, *fixed, bool(null_on), bool(clamp),
-            float(np.sqrt(self._tol2[0])), float(np.sqrt(self._tol2[1])),
-            float(max_joint_step), int(self.cap),
+            *self._tol, float(max_joint_step), int(self.cap),
         )  # fmt: skip
 
     def prepare(self, q0: np.ndarray, label: str | None, max_joint_step: float) -> bool:
