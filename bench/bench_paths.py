@@ -14,7 +14,11 @@ Reported per robot:
 - time per point, over the completed lines: ``follow``'s wall time over the points it
   returned (densified points included), against a single
   ``ik.solve`` per point on the same poses from a cold seed (the middle of the joint limits,
-  what a client calling POST /ik per point gets), and their ratio (target ≤ 0.5);
+  what a client calling POST /ik per point gets), and their ratio (target ≤ 0.5); beside
+  it the same ``follow`` with the per-point checks in Python (the baseline: the compiled
+  point of :mod:`app.kinematics.paths.point_kernel` switched off), the three timed line by
+  line in rotating order so that load hits all alike, and whether both answered the same
+  points;
 - the failure reasons of ``follow``, and its mean wall time on a line it could not finish
   (the halved steps and the last full-budget attempt).
 
@@ -26,6 +30,8 @@ from __future__ import annotations
 import os
 import time
 from collections import Counter
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -33,7 +39,8 @@ from app.kinematics import ik
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.ik.search import joint_distance
 from app.kinematics.models import RobotModel
-from app.kinematics.paths.follow import PathOptions, follow
+from app.kinematics.paths.follow import PathOptions, PathResult, follow
+from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import CartesianPath, Line
 from app.robots.registry import Registry
 from bench._lines import RandomLine, random_lines
@@ -41,6 +48,26 @@ from bench._lines import RandomLine, random_lines
 ROBOTS = (("ur5", "tool0"), ("panda", "panda_hand"))
 OPTIONS = PathOptions(max_step=(0.01, 0.05), max_joint_step=0.1)
 SEED = 2026
+#: The target: follow's time per point at most this fraction of a cold single IK.
+TARGET = 0.5
+
+
+@contextmanager
+def python_checks() -> Iterator[None]:
+    """The baseline: ``follow`` with the per-point checks in Python (the compiled point
+    never prepared, as for a chain the kernel does not support)."""
+    prepare = LocalSolver.prepare
+    LocalSolver.prepare = lambda self, *args: False  # type: ignore[method-assign]
+    try:
+        yield
+    finally:
+        LocalSolver.prepare = prepare  # type: ignore[method-assign]
+
+
+def _timed(fn: Callable[[], PathResult | None]) -> tuple[PathResult | None, float]:
+    t0 = time.perf_counter()
+    out = fn()
+    return out, time.perf_counter() - t0
 
 
 def naive(robot: RobotModel, line: RandomLine, opts: IKOptions) -> bool:
@@ -62,26 +89,42 @@ def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
     opts = IKOptions(frame=frame, max_iterations=200, timeout_ms=50.0)
     lines = random_lines(robot, frame, n, SEED)
     done = naive_done = points = 0
-    t_follow = t_cold = t_failed = 0.0
+    t_follow = t_old = t_cold = t_failed = 0.0
+    same = True
     reasons: Counter[str] = Counter()
     for i, line in enumerate(lines):
         path = CartesianPath.from_segments(line.start, [Line(line.end)])
-        t0 = time.perf_counter()
-        res = follow(robot, line.q0, path, opts, OPTIONS, rng=np.random.default_rng(i))
-        dt = time.perf_counter() - t0
+
+        def new(path=path, line=line, i=i) -> PathResult:
+            return follow(robot, line.q0, path, opts, OPTIONS, rng=np.random.default_rng(i))
+
+        def old(new=new) -> PathResult:
+            with python_checks():
+                return new()
+
+        res, dt = _timed(new)
         naive_done += naive(robot, line, opts)
         if res.failure is not None:
             reasons[res.failure.reason] += 1
             t_failed += dt
             continue
         done += 1
-        t_follow += dt
         pts = res.points[1:]
         points += len(pts)
-        t0 = time.perf_counter()
-        for p in pts:
-            ik.solve(robot, path.pose_at(p.s), opts)
-        t_cold += time.perf_counter() - t0
+
+        def cold(path=path, pts=pts) -> None:
+            for p in pts:
+                ik.solve(robot, path.pose_at(p.s), opts)
+
+        # the three in rotating order, each timed once more (the first run above warmed up)
+        timed: dict[str, float] = {}
+        for name in ("new", "old", "cold")[i % 3 :] + ("new", "old", "cold")[: i % 3]:
+            out, timed[name] = _timed({"new": new, "old": old, "cold": cold}[name])
+            if name == "old":
+                same = same and _same(res, out)
+        t_follow += timed["new"]
+        t_old += timed["old"]
+        t_cold += timed["cold"]
     return {
         "robot": rid,
         "frame": frame,
@@ -89,11 +132,25 @@ def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
         "follow": done / n,
         "naive": naive_done / n,
         "follow_ms": 1e3 * t_follow / max(points, 1),
+        "old_ms": 1e3 * t_old / max(points, 1),
         "cold_ms": 1e3 * t_cold / max(points, 1),
         "points": points,
+        "same": same,
         "failed_ms": 1e3 * t_failed / max(n - done, 1),
         "reasons": ", ".join(f"{k} {v}" for k, v in reasons.most_common()),
     }
+
+
+def _same(a: PathResult, b: PathResult | None) -> bool:
+    """Whether two answers have the same points (configurations to 1e-9, s exactly)."""
+    return (
+        b is not None
+        and len(a.points) == len(b.points)
+        and all(
+            p.s == r.s and np.allclose(p.q, r.q, rtol=0.0, atol=1e-9)
+            for p, r in zip(a.points, b.points, strict=True)
+        )
+    )
 
 
 def main() -> None:
@@ -102,16 +159,28 @@ def main() -> None:
     print(f"machine: {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
     print(f"\n### {n} random lines per robot (0.1–0.5 m, orientation fixed)\n")
     print("| robot | frame | lines completed, follow | lines completed, naive | points "
-          "| follow (ms per point) | cold single IK (ms per point) | ratio "
+          "| follow (ms per point) | follow, Python checks (ms per point) "
+          "| cold single IK (ms per point) | ratio | ratio, Python checks | same points "
           "| follow's failures | ms per failed line |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    rows = []
     for rid, frame in ROBOTS:
         r = run(reg, rid, frame, n)
+        rows.append(r)
         print(f"| {r['robot']} | {r['frame']} | {100 * r['follow']:.1f}% | "
               f"{100 * r['naive']:.1f}% | {r['points']} | {r['follow_ms']:.3f} | "
-              f"{r['cold_ms']:.3f} | {r['follow_ms'] / r['cold_ms']:.2f} | {r['reasons']} "
-              f"| {r['failed_ms']:.1f} |",
+              f"{r['old_ms']:.3f} | {r['cold_ms']:.3f} | {r['follow_ms'] / r['cold_ms']:.2f} | "
+              f"{r['old_ms'] / r['cold_ms']:.2f} | {'yes' if r['same'] else 'NO'} | "
+              f"{r['reasons']} | {r['failed_ms']:.1f} |",
               flush=True)  # fmt: skip
+    print()
+    for r in rows:
+        ratio = r["follow_ms"] / r["cold_ms"]
+        print(f"target: {r['robot']} path per point ≤ {TARGET}× a cold single IK; baseline "
+              f"(Python checks) {r['old_ms'] / r['cold_ms']:.2f}×, measured {ratio:.2f}× "
+              f"({r['follow_ms']:.3f} / {r['cold_ms']:.3f} ms): "
+              f"{'met' if ratio <= TARGET else 'not met'}")  # fmt: skip
+    print(f"load average: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 
 
 if __name__ == "__main__":

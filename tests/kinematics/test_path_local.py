@@ -12,9 +12,11 @@ from __future__ import annotations
 import time
 
 import numpy as np
+import pinocchio as pin
 import pytest
 
 from app.kinematics.ik.search import joint_distance
+from app.kinematics.paths import point_kernel
 from app.kinematics.paths.follow import PathOptions, follow
 from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import CartesianPath, Line
@@ -44,58 +46,82 @@ def _complete_line(registry, robot_id: str, frame: str):
 # ----------------------------------------------------------------- the local solve
 @pytest.mark.parametrize(("robot_id", "frame"), ARMS)
 def test_local_solver_applies_and_is_used(registry, robot_id: str, frame: str) -> None:
-    """On a full-pose line the local attempts answer most points (else the speed-up is
-    gone), and the answer is the verified path."""
+    """On a full-pose line the compiled local points answer most points (else the speed-up
+    is gone), and the answer is the verified path."""
     robot, line, path, _ = _complete_line(registry, robot_id, frame)
-    calls = {"converged": 0}
-    original = LocalSolver.attempt
+    calls = {"accepted": 0}
+    original = LocalSolver.point
 
-    def counting(self, q_prev, target):
-        q, n = original(self, q_prev, target)
-        calls["converged"] += q is not None
-        return q, n
+    def counting(self, *args):
+        out = original(self, *args)
+        calls["accepted"] += out[0] == point_kernel.OK
+        return out
 
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(LocalSolver, "attempt", counting)
+        mp.setattr(LocalSolver, "point", counting)
         res = follow(robot, line.q0, path, ik_options(frame), OPTIONS)
     assert res.failure is None
     check_points(robot, frame, line.q0, path, res, OPTIONS)
-    assert calls["converged"] >= 0.9 * (len(res.points) - 1)
+    assert calls["accepted"] >= 0.9 * (len(res.points) - 1)
+
+
+def _lie(solver: LocalSolver, q_prev: np.ndarray, kind: str) -> np.ndarray:
+    """A wrong configuration claimed as converged."""
+    q = q_prev.copy()
+    a = solver.ch.active
+    if kind == "unconverged":  # a small step off the pose (0.01 rad on joint 1)
+        q[a[1]] += 0.01
+    elif kind == "outside_limits":
+        q[a[0]] = solver.robot.upper[a[0]] + 0.5
+    elif kind == "jump":  # far beyond max_joint_step
+        q[a[0]] += 1.0
+    elif kind == "nan":
+        q[a[2]] = np.nan
+    return q
 
 
 def _lying(kind: str, calls: list[int]):
-    """A LocalSolver.attempt that claims convergence on a wrong configuration (counting
-    its calls in ``calls``)."""
+    """A LocalSolver.attempt (the Python path) that claims convergence on a wrong
+    configuration (counting its calls in ``calls``)."""
 
     def attempt(self, q_prev, target):
         calls.append(1)
-        q = q_prev.copy()
-        a = self.ch.active
-        if kind == "unconverged":  # a small step off the pose (0.01 rad on joint 1)
-            q[a[1]] += 0.01
-        elif kind == "outside_limits":
-            q[a[0]] = self.robot.upper[a[0]] + 0.5
-        elif kind == "jump":  # far beyond max_joint_step
-            q[a[0]] += 1.0
-        elif kind == "nan":
-            q[a[2]] = np.nan
-        return q, 3
+        return _lie(self, q_prev, kind), 3
 
     return attempt
 
 
+def _lying_point(kind: str, calls: list[int]):
+    """A LocalSolver.point (the compiled path) whose attempt claims convergence on a wrong
+    configuration: the compiled checks alone (LocalSolver.check) judge it."""
+
+    def point(self, q_prev, R, p, middle):
+        calls.append(1)
+        status, q, ep, er = self.check(q_prev, _lie(self, q_prev, kind), pin.SE3(R, p))
+        assert status != point_kernel.OK
+        return status, None, 0.0, 0.0, 3, 0.0, 0.0
+
+    return point
+
+
+@pytest.mark.parametrize("checks", ["compiled", "python"])
 @pytest.mark.parametrize("kind", ["unconverged", "outside_limits", "jump", "nan"])
 @pytest.mark.parametrize(("robot_id", "frame"), ARMS)
 def test_wrong_local_answers_are_never_accepted(
-    registry, robot_id: str, frame: str, kind: str
+    registry, robot_id: str, frame: str, kind: str, checks: str
 ) -> None:
     """A local solve that returns an unconverged, out-of-limits, jumping or NaN
-    configuration as converged: no such point is returned; the fallback (ik.solve) still
+    configuration as converged: no such point is returned, by the compiled checks or by
+    the Python ones (the compiled point switched off); the fallback (ik.solve) still
     follows the line, and every point is on the path by yourdfpy's FK."""
     robot, line, path, ref = _complete_line(registry, robot_id, frame)
     calls: list[int] = []
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(LocalSolver, "attempt", _lying(kind, calls))
+        if checks == "compiled":
+            mp.setattr(LocalSolver, "point", _lying_point(kind, calls))
+        else:
+            mp.setattr(LocalSolver, "prepare", lambda self, *args: False)
+            mp.setattr(LocalSolver, "attempt", _lying(kind, calls))
         res = follow(robot, line.q0, path, ik_options(frame), OPTIONS)
     assert len(calls) >= len(res.points) - 1  # every point was offered the lie first
     check_points(robot, frame, line.q0, path, res, OPTIONS)
@@ -105,6 +131,33 @@ def test_wrong_local_answers_are_never_accepted(
         assert (p.q >= robot.lower).all() and (p.q <= robot.upper).all()
     # The fallback answers the same path (not necessarily the same points: no local steps).
     assert res.fraction == ref.fraction == 1.0
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), ARMS)
+def test_compiled_and_python_checks_answer_the_same_points(
+    registry, robot_id: str, frame: str
+) -> None:
+    """The same lines followed with the compiled point and with the Python checks: the
+    same points (configurations to 1e-12, s exactly), errors and failure."""
+    robot = registry.get(robot_id)
+    for line in random_lines(robot, frame, 8, seed=21, checks=4):
+        path = CartesianPath.from_segments(line.start, [Line(line.end)])
+        res = follow(robot, line.q0, path, ik_options(frame), OPTIONS)
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(LocalSolver, "prepare", lambda self, *args: False)
+            ref = follow(robot, line.q0, path, ik_options(frame), OPTIONS)
+        assert len(res.points) == len(ref.points)
+        for p, r in zip(res.points, ref.points, strict=True):
+            assert p.s == r.s
+            np.testing.assert_allclose(p.q, r.q, rtol=0.0, atol=1e-12)
+            assert p.position_error == pytest.approx(r.position_error, abs=1e-12)
+            assert p.orientation_error == pytest.approx(r.orientation_error, abs=1e-12)
+        assert (res.failure is None) == (ref.failure is None)
+        if res.failure is not None:
+            assert (res.failure.reason, res.failure.index) == (
+                ref.failure.reason,
+                ref.failure.index,
+            )
 
 
 # ------------------------------------------------------------------------ deadline

@@ -1,7 +1,9 @@
 """Compiling the solver's kernels once per process: :func:`warm_up`, :func:`warmed`.
 
 The kernels (:mod:`.kernel`, :mod:`.search_kernel`, the UR closed form of
-:mod:`app.kinematics.analytic_ik.ur`) are compiled by Numba on first use, or loaded from its
+:mod:`app.kinematics.analytic_ik.ur`, the branch flags of :mod:`.branch_kernel`, a path's
+compiled point, :mod:`app.kinematics.paths.point_kernel` and
+:mod:`~app.kinematics.paths.pose_kernel`) are compiled by Numba on first use, or loaded from its
 on-disk cache. :func:`warm_up` does all of it before any query (at start-up, in each worker
 process), so that no query's time budget pays for compiling; :func:`warmed` is True only
 once every kernel is ready.
@@ -12,8 +14,9 @@ from __future__ import annotations
 import threading
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import kernel, search_kernel
+from app.kinematics.ik import branch_kernel, kernel, search_kernel
 from app.kinematics.jit import available
+from app.kinematics.paths import point_kernel, pose_kernel
 
 _LOCK = threading.Lock()
 _warmed = False
@@ -38,6 +41,7 @@ def warm_up() -> None:
         kernel.warm_up()
         search_kernel.warm_up()
         analytic_ik.warm_up()
+        point_kernel.warm_up()  # the branch flags and a segment's pose with it
         _warmed = True  # only now: every kernel is ready
 
 
@@ -49,7 +53,7 @@ def kernel_cache_stats() -> dict[str, int]:
     from numba.core.dispatcher import Dispatcher
 
     loaded = compiled = 0
-    for module in (kernel, search_kernel, analytic_ik.ur):
+    for module in (kernel, search_kernel, analytic_ik.ur, branch_kernel, point_kernel, pose_kernel):
         for obj in vars(module).values():
             # a kernel imported by another module is counted in its own module only
             if isinstance(obj, Dispatcher) and obj.__module__ == module.__name__:

@@ -9,6 +9,9 @@ The package, one concept per module:
   densification to the deviation bound, the points reached;
 - :mod:`.local`: the warm-started local solve of the next point (one compiled attempt from
   the previous point) and its independent verification;
+- :mod:`.point_kernel`: that attempt and its checks (a forward kinematics of its own,
+  limits, pose error, joint step, branch flags, the deviation at the middle) as one
+  compiled call per point; :mod:`.pose_kernel`: a segment's pose in compiled code;
 - :mod:`.failures`: the joint-step, branch and collision guards inside the solver, and the
   typed failure (``reason``, ``detail``) of the first point that cannot be reached;
 - :mod:`.timing`: time-optimal parameterization of the joint path (toppra) under velocity

@@ -13,8 +13,11 @@ only when
 The first attempt at a waypoint is the local solve of :mod:`.local`: one compiled damped
 least-squares attempt from the previous point (full pose; a few iterations), its answer
 re-checked independently (a separate forward kinematics against the waypoint within the IK
-tolerance, the joint limits, and the guards above); where it fails, the Cartesian step is
-halved (at most :data:`MAX_BISECT` times) with local attempts only. When even that fails,
+tolerance, the joint limits, and the guards above; on chains the compiled kernel supports
+the attempt and every check but the caller's ``accept`` are one compiled call,
+:mod:`.point_kernel`, which also measures the deviation at the middle of the step); where
+it fails, the Cartesian step is halved (at most :data:`MAX_BISECT` times) with local
+attempts only. When even that fails,
 :func:`app.kinematics.ik.solve` takes over with the guards *inside* the solver (as its
 ``accept`` predicate, so a restart that lands on another branch is dropped and the search
 goes on): first with a local budget (at most :data:`LOCAL_ITERATIONS` Jacobian evaluations,
@@ -58,7 +61,7 @@ from app.kinematics.ik.search import Clock
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
 from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
-from app.kinematics.paths.segments import CartesianPath, check_max_step
+from app.kinematics.paths.segments import CartesianPath, Target, check_max_step
 
 __all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
 
@@ -192,6 +195,9 @@ class _Walk:
         self.iterations = 0
         self.label: str | None = None
         self.points: list[PathPoint] = []
+        #: Deviations at the middle measured by the compiled point, by id of the point:
+        #: (the point, the configuration it was solved from, position m, rotation rad).
+        self.middles: dict[int, tuple[PathPoint, np.ndarray, float, float]] = {}
 
     # ------------------------------------------------------------------ solving
     def guard(self, q_prev: np.ndarray, record_all: bool = False) -> Guard:
@@ -206,19 +212,34 @@ class _Walk:
             record_all,
         )
 
-    def warm_start(self, q_prev: np.ndarray, T: pin.SE3, s: float) -> PathPoint | None:
+    def warm_start(
+        self, q_prev: np.ndarray, s_prev: float, T: Target, s: float
+    ) -> PathPoint | None:
         """The point at ``T`` (path parameter ``s``) by the local attempt from ``q_prev``
-        (:mod:`.local`), verified independently; None when it fails or is refused."""
-        q, n = self.warm.attempt(q_prev, T)
+        (at ``s_prev``; :mod:`.local`), verified independently; None when it fails or is
+        refused.
+
+        With the compiled point (:meth:`LocalSolver.point`) the attempt and the checks are
+        one call, which also measures the deviation at the middle of the step from the
+        path's pose at the middle s (kept for :meth:`deviation`); the caller's ``accept``
+        follows in Python."""
+        if self.warm.compiled is not None:
+            middle = self.path.piece_at(0.5 * (s_prev + s))
+            status, q, ep, er, n, dev_p, dev_r = self.warm.point(q_prev, T.R, T.p, middle)
+            self.iterations += n
+            if q is None or (self.accept is not None and not self.accept(q)):
+                return None
+            b = PathPoint(q, ep, er, s)
+            self.middles[id(b)] = (b, q_prev, dev_p, dev_r)
+            return b
+        q, n = self.warm.attempt(q_prev, T.se3)
         self.iterations += n
         if q is None:
             return None
-        ok = verify(self.robot, self.ch, self.task, self.tol, q, T, self.guard(q_prev))
+        ok = verify(self.robot, self.ch, self.task, self.tol, q, T.se3, self.guard(q_prev))
         return None if ok is None else PathPoint(ok[0], ok[1], ok[2], s)
 
-    def solve(
-        self, q_prev: np.ndarray, T: pin.SE3, full: bool = False
-    ) -> tuple[ik.IKResult, Guard]:
+    def solve(self, q_prev: np.ndarray, T: Target, full: bool = False) -> tuple[ik.IKResult, Guard]:
         """IK of ``T`` seeded by ``q_prev`` under the guards (local budget unless ``full``)."""
         g = self.guard(q_prev, record_all=full)
         opts = self.full if full else self.local
@@ -228,7 +249,7 @@ class _Walk:
                 opts = replace(opts, timeout_ms=max(left_ms, MIN_SOLVE_MS))
         res = ik.solve(
             self.robot,
-            T,
+            T.se3,
             opts,
             seed=q_prev,
             accept=g,
@@ -241,26 +262,24 @@ class _Walk:
 
     # ------------------------------------------------------------------- walking
     def warm_chain(
-        self, q_a: np.ndarray, s_a: float, T_b: pin.SE3, s_b: float, depth: int
+        self, q_a: np.ndarray, s_a: float, T_b: Target, s_b: float, depth: int
     ) -> list[PathPoint] | None:
         """Verified points from ``q_a`` (at ``s_a``) to ``T_b`` (at ``s_b``, the last one)
         by local attempts only (:meth:`warm_start`), halving the step where one fails (down
         to depth :data:`MAX_BISECT`); None when some half still fails. Nothing is appended."""
-        b = self.warm_start(q_a, T_b, s_b)
+        b = self.warm_start(q_a, s_a, T_b, s_b)
         if b is not None:
             return [b]
         if depth >= MAX_BISECT:
             return None
         s_m = 0.5 * (s_a + s_b)
-        first = self.warm_chain(q_a, s_a, self.path.pose_at(s_m), s_m, depth + 1)
+        first = self.warm_chain(q_a, s_a, self.path.target_at(s_m), s_m, depth + 1)
         if first is None:
             return None
         rest = self.warm_chain(first[-1].q, s_m, T_b, s_b, depth + 1)
         return None if rest is None else first + rest
 
-    def advance(
-        self, T_b: pin.SE3, s_b: float, depth: int = 0, warm: bool = True
-    ) -> _Failed | None:
+    def advance(self, T_b: Target, s_b: float, depth: int = 0, warm: bool = True) -> _Failed | None:
         """Append the points from the last one to the pose ``T_b`` at ``s_b`` (included);
         on failure the last attempt (the points reached on the way stay).
 
@@ -281,9 +300,9 @@ class _Walk:
         if res.success:
             return self.densify(a, PathPoint(res.q, res.position_error, res.orientation_error, s_b))
         if depth >= MAX_BISECT:
-            return res, g, T_b, s_b
+            return res, g, T_b.se3, s_b
         s_m = 0.5 * (a.s + s_b)
-        return self.advance(self.path.pose_at(s_m), s_m, depth + 1, False) or self.advance(
+        return self.advance(self.path.target_at(s_m), s_m, depth + 1, False) or self.advance(
             T_b, s_b, depth + 1, False
         )
 
@@ -294,13 +313,24 @@ class _Walk:
         The middle is checked first: a smooth deviation vanishes at both ends and bulges like
         f(1 − f), largest at f = 1/2, so when the middle is within half the bounds the other
         fractions are skipped."""
-        robot = self.robot
+        robot, warm = self.robot, self.warm
+        middle = self.middles.pop(id(b), None)
+        dev_p, dev_r = self.options.max_deviation
+        if middle is not None and middle[0] is b and middle[1] is a.q:
+            # the middle measured by the compiled point, within half the bounds: done
+            if middle[2] <= 0.5 * dev_p and middle[3] <= 0.5 * dev_r:
+                return middle[2], middle[3]
         dq = robot.difference(a.q, b.q)
         worst_p = worst_r = 0.0
-        dev_p, dev_r = self.options.max_deviation
         for k, f in enumerate(MIDDLE_FIRST):
-            T = frame_pose(robot, a.q + f * dq, self.ch.frame_id)
-            ep, er = residuals(T, self.path.pose_at(a.s + f * (b.s - a.s)), self.task)
+            if k == 0 and middle is not None and middle[0] is b and middle[1] is a.q:
+                ep, er = middle[2], middle[3]
+            elif warm.compiled is not None:
+                q = (a.q + f * dq)[self.ch.active]
+                ep, er = warm.residuals_at(q, self.path.pose_at(a.s + f * (b.s - a.s)))
+            else:
+                T = frame_pose(robot, a.q + f * dq, self.ch.frame_id)
+                ep, er = residuals(T, self.path.pose_at(a.s + f * (b.s - a.s)), self.task)
             worst_p, worst_r = max(worst_p, ep), max(worst_r, er)
             if k == 0 and worst_p <= 0.5 * dev_p and worst_r <= 0.5 * dev_r:
                 break
@@ -316,18 +346,18 @@ class _Walk:
             self.points.append(b)
             return None
         s_m = 0.5 * (a.s + b.s)
-        T_m = self.path.pose_at(s_m)
+        T_m = self.path.target_at(s_m)
         if depth >= MAX_DENSIFY_DEPTH:
             res, g = self.solve(a.q, T_m, full=True)
             g.deviation = (ep, er, depth)
-            return res, g, T_m, s_m
-        m = self.warm_start(a.q, T_m, s_m)
+            return res, g, T_m.se3, s_m
+        m = self.warm_start(a.q, a.s, T_m, s_m)
         if m is None:
             res, g = self.solve(a.q, T_m)
             if not res.success:
                 res, g = self.solve(a.q, T_m, full=True)
                 if not res.success:
-                    return res, g, T_m, s_m
+                    return res, g, T_m.se3, s_m
             m = PathPoint(res.q, res.position_error, res.orientation_error, s_m)
         return self.densify(a, m, depth + 1) or self.densify(m, b, depth + 1)
 
@@ -407,6 +437,7 @@ def follow(
     if options.branch is not None and label != options.branch:
         where = "has no branch labels" if label is None else f"starts on branch {label!r}"
         raise InvalidInputError(f"the path {where}, not {options.branch!r}", "branch")
+    walk.warm.prepare(q0, label, options.max_joint_step)
     ep, er = residuals(frame_pose(robot, q0, walk.ch.frame_id), path.start, walk.task)
     tol_p, tol_r = ik_options.tolerance
     if ep > tol_p or er > tol_r:
@@ -414,7 +445,7 @@ def follow(
             f"the path does not start at the frame's pose at start ({ep:.3g} m, {er:.3g} rad away)",
             "start",
         )
-    poses, ss = path.sample(options.max_step)
+    poses, ss = path.sample_targets(options.max_step)
     points = walk.points
     failure: PathFailure | None = None
     if accept is not None and not accept(q0):

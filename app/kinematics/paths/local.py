@@ -15,6 +15,13 @@ label, the caller's ``accept``). When the local attempt fails or its answer is r
 
 The local solve applies to the full pose (six rows, unit weights) on chains the kernel
 supports (``IKChain.compiled``); other tasks always use :func:`app.kinematics.ik.solve`.
+
+Once :meth:`LocalSolver.prepare` has the path's start, joint step and branch label,
+:meth:`LocalSolver.point` makes the attempt and every check above but the caller's
+``accept`` in one compiled call (:mod:`.point_kernel`, its forward kinematics composed
+afresh from the chain constants, tested against Pinocchio's and against :func:`verify`);
+:meth:`LocalSolver.attempt` and :func:`verify` remain the path where it does not apply
+(no compiled kernel, or the compiled flags of the start disagree with its label).
 """
 
 from __future__ import annotations
@@ -24,12 +31,15 @@ import pinocchio as pin
 
 from app.kinematics import jit
 from app.kinematics.fk import frame_pose
-from app.kinematics.ik import kernel
+from app.kinematics.ik import branch_kernel, kernel
 from app.kinematics.ik.boundary import step_parameters
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
+from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
+from app.kinematics.paths import point_kernel
 from app.kinematics.paths.failures import Guard, residuals
+from app.kinematics.paths.pose_kernel import PieceArrays
 
 #: Jacobian evaluations of the local attempt at a point (a warm step needs 2–4).
 LOCAL_ITERATIONS = 30
@@ -72,9 +82,112 @@ class LocalSolver:
         # the attempt's cap is this solver's, not the search's
         self._step = step_parameters(p, attempt_cap=cap)
         self._flags = (redundant and p.null_gain > 0.0, p.clamp and redundant)
-        self._tol2 = (float(tolerance[0]) ** 2, float(tolerance[1]) ** 2)
+        self._tol = (float(tolerance[0]), float(tolerance[1]))
+        self._tol2 = (self._tol[0] ** 2, self._tol[1] ** 2)
         self._best = np.empty(1)
         self._best_q = np.empty(chain.k)
+        #: The compiled point's constants once :meth:`prepare` accepted them, else None.
+        self.compiled: point_kernel.PointConstants | None = None
+        self._label = point_kernel.NO_LABELS
+        self._q = np.empty(robot.n)
+        self._out = np.empty(5)
+        self._err = np.empty(2)
+
+    def constants(self, max_joint_step: float) -> point_kernel.PointConstants | None:
+        """The compiled point's constants for ``max_joint_step`` (rad or m), or None when
+        the local solve does not apply."""
+        if not self.available:
+            return None
+        ch = self.ch
+        key = LazyKey(f"paths.point:{ch.frame_id}:{ch.active.tolist()}", tuple)
+        fixed = self.robot.lazy(key, lambda robot: _fixed_constants(robot, ch))
+        null_on, clamp = self._flags
+        return point_kernel.PointConstants(
+            self._chain, self._step, *fixed, bool(null_on), bool(clamp),
+            *self._tol, float(max_joint_step), int(self.cap),
+        )  # fmt: skip
+
+    def prepare(self, q0: np.ndarray, label: str | None, max_joint_step: float) -> bool:
+        """Turn the compiled point on for a path from ``q0`` (wire) on branch ``label``
+        under ``max_joint_step``; returns whether it is on. Off where the local solve does
+        not apply, or where the compiled flags of ``q0`` name another label than ``label``
+        (a start exactly on a branch boundary): the Python checks decide then."""
+        self.compiled = None
+        pc = self.constants(max_joint_step)
+        if pc is None or self.cap <= 0:
+            return False
+        code = point_kernel.NO_LABELS
+        if label is not None:
+            if pc.kind == point_kernel.NO_LABELS:
+                return False
+            q = np.ascontiguousarray(q0, dtype=np.float64)
+            code = int(jit.direct(point_kernel.label_code, q, pc)(q, pc))
+            if branch_kernel.label(self.ch.branch_form, code) != label:
+                return False
+        self.compiled, self._label = pc, code
+        return True
+
+    def point(
+        self, q_prev: np.ndarray, R: np.ndarray, p: np.ndarray, middle: tuple[PieceArrays, float]
+    ) -> tuple[int, np.ndarray | None, float, float, int, float, float]:
+        """The attempt from ``q_prev`` towards the target pose (``R`` (3, 3), ``p`` (3,):
+        C-contiguous float64, root frame) and its checks in one compiled call
+        (:func:`app.kinematics.paths.point_kernel.step`; :meth:`prepare` first).
+
+        Returns
+        -------
+        status, q, position_error, orientation_error, iterations, dev_p, dev_r
+            The status (:data:`app.kinematics.paths.point_kernel.STATUSES`); on ``OK`` the
+            checked wire configuration (wrapped), its errors against the target (m, rad), and
+            the frame's deviation from ``middle`` (the path's pose half-way: a segment and its
+            parameter, :meth:`CartesianPath.piece_at`) at the middle of the joint-space step
+            (m, rad); ``q`` None otherwise.
+        """
+        pc = self.compiled
+        assert pc is not None, "prepare() first"
+        q, out = self._q, self._out
+        args = (
+            np.ascontiguousarray(q_prev, dtype=np.float64), pc, R, p, self._label,
+            middle[0], float(middle[1]), q, out,
+        )  # fmt: skip
+        status = int(jit.direct(point_kernel.step, *args)(*args))
+        n = int(out[2])
+        if status != point_kernel.OK:
+            return status, None, 0.0, 0.0, n, 0.0, 0.0
+        return status, q.copy(), float(out[0]), float(out[1]), n, float(out[3]), float(out[4])
+
+    def check(
+        self, q_prev: np.ndarray, q: np.ndarray, target: pin.SE3
+    ) -> tuple[int, np.ndarray, float, float]:
+        """The compiled checks alone (:func:`app.kinematics.paths.point_kernel.checks`) of
+        the candidate wire configuration ``q`` from ``q_prev`` towards ``target``
+        (:meth:`prepare` first): the status, ``q`` wrapped, and the errors (m, rad; NaN
+        when the check stopped before the forward kinematics)."""
+        pc = self.compiled
+        assert pc is not None, "prepare() first"
+        qw = np.array(q, dtype=np.float64, order="C")
+        err = np.full(2, np.nan)
+        args = (
+            qw, np.ascontiguousarray(q_prev, dtype=np.float64), pc,
+            np.array(target.rotation, dtype=np.float64, order="C"),
+            np.array(target.translation, dtype=np.float64, order="C"), self._label, err,
+        )  # fmt: skip
+        status = int(jit.direct(point_kernel.checks, *args)(*args))
+        return status, qw, float(err[0]), float(err[1])
+
+    def residuals_at(self, qa: np.ndarray, target: pin.SE3) -> tuple[float, float]:
+        """Position and rotation error (m, rad) of the frame at the chain configuration
+        ``qa`` (k,) against ``target``, by the compiled forward kinematics (:meth:`prepare`
+        first)."""
+        pc = self.compiled
+        assert pc is not None, "prepare() first"
+        args = (
+            np.ascontiguousarray(qa, dtype=np.float64), pc.chain,
+            np.ascontiguousarray(target.rotation, dtype=np.float64),
+            np.ascontiguousarray(target.translation, dtype=np.float64), self._err,
+        )  # fmt: skip
+        jit.direct(point_kernel.pose_residuals, *args)(*args)
+        return float(self._err[0]), float(self._err[1])
 
     def attempt(self, q_prev: np.ndarray, target: pin.SE3) -> tuple[np.ndarray | None, int]:
         """One attempt towards ``target`` from the wire configuration ``q_prev``.
@@ -105,6 +218,50 @@ class LocalSolver:
         q = q_prev.copy()
         q[ch.active] = qa
         return q, int(n)
+
+
+def _fixed_constants(robot: RobotModel, ch: IKChain) -> tuple:
+    """The fields of :class:`~app.kinematics.paths.point_kernel.PointConstants` that depend
+    on the chain only, from ``active`` to ``tip_axis4`` (cached per chain)."""
+    form = ch.branch_form
+    kind, elbow, tip4, wrist = point_kernel.NO_LABELS, False, False, np.zeros(3)
+    if form is not None:
+        kind, elbow, tip4 = branch_kernel.form_arrays(form)
+        if form.wrist is not None:
+            wrist = _wrist_in_chain_frame(robot, ch, form.pin_ids[4], form.wrist)
+    cont = np.zeros(robot.n, dtype=np.bool_)
+    cont[[i for i, j in enumerate(robot.joints) if j.continuous]] = True
+    return (
+        np.ascontiguousarray(ch.active, dtype=np.int64),
+        np.ascontiguousarray(robot.lower, dtype=np.float64),
+        np.ascontiguousarray(robot.upper, dtype=np.float64), cont,
+        np.ascontiguousarray(wrist, dtype=np.float64), int(kind), bool(elbow), bool(tip4),
+    )  # fmt: skip
+
+
+def _wrist_in_chain_frame(
+    robot: RobotModel, ch: IKChain, pin_id: int, wrist: np.ndarray
+) -> np.ndarray:
+    """The wrist point (given in Pinocchio's frame of joint ``pin_id``, the fifth moving
+    joint) in the chain constants' frame of that joint (z along its axis), from both
+    placements at one configuration (a generic one: any gives the same point)."""
+    model, k = robot.model, ch.k
+    data = model.createData()
+    qa = 0.3 + 0.1 * np.arange(k)
+    q = np.zeros(robot.n)
+    q[ch.active] = qa
+    pin.forwardKinematics(model, data, robot.to_pin(q))
+    w0 = data.oMi[pin_id].act(np.asarray(wrist, dtype=float))
+    # frames() applies joint 5's placement (R5, p5) to a point: p5 from 0, R5's columns
+    # from the unit vectors
+    R, p, z, o = np.empty((3, 3)), np.empty(3), np.empty((k, 3)), np.empty((k, 3))
+    placed = []
+    for u in (np.zeros(3), *np.eye(3)):
+        w = np.empty(3)
+        point_kernel.frames(qa, ch.chain_constants, R, p, z, o, w, np.ascontiguousarray(u))
+        placed.append(w)
+    R5 = np.column_stack([placed[i] - placed[0] for i in (1, 2, 3)])
+    return R5.T @ (w0 - placed[0])
 
 
 def verify(

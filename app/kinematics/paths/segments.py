@@ -37,6 +37,7 @@ import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.paths.pose_kernel import PieceArrays
 
 #: Characteristic length weighing rotation against translation in the path length (m/rad).
 ROTATION_LENGTH = 0.1
@@ -73,6 +74,36 @@ def _slerp(R0: np.ndarray, w: np.ndarray, t: float, turns: bool = True) -> np.nd
     return R0 @ pin.exp3(t * w) if turns else R0
 
 
+class Target:
+    """A pose of the path as arrays, its :class:`pinocchio.SE3` built on demand (the
+    compiled point reads the arrays; only the fallbacks need the SE3).
+
+    ``R`` (3, 3) and ``p`` (3,): rotation and position in the root frame (m), C-contiguous
+    float64, never modified.
+    """
+
+    __slots__ = ("R", "_se3", "p")
+
+    def __init__(self, R: np.ndarray, p: np.ndarray) -> None:
+        # the compiled point reads them as C-contiguous float64 (a Fortran-ordered rotation,
+        # e.g. Pinocchio's, would be read transposed)
+        self.R = np.ascontiguousarray(R, dtype=np.float64)
+        self.p = np.ascontiguousarray(p, dtype=np.float64)
+        self._se3: pin.SE3 | None = None
+
+    @property
+    def se3(self) -> pin.SE3:
+        """The pose as a :class:`pinocchio.SE3` (built once)."""
+        if self._se3 is None:
+            self._se3 = pin.SE3(self.R, self.p)
+        return self._se3
+
+
+def _target(T: pin.SE3) -> Target:
+    """``T`` as a :class:`Target` (copies)."""
+    return Target(np.array(T.rotation, order="C"), np.array(T.translation, order="C"))
+
+
 class _Piece:
     """One segment, prepared: pose at its own parameter u ∈ [0, 1], lengths and rates."""
 
@@ -93,6 +124,7 @@ class _Piece:
             self.Rv = seg.via.rotation
             self.w1 = pin.log3(R0.T @ self.Rv)
             self.w2 = pin.log3(self.Rv.T @ seg.to.rotation)
+        self._arrays: PieceArrays | None = None
         self.th1 = float(np.linalg.norm(self.w1))
         self.th2 = float(np.linalg.norm(self.w2))
         self.length = math.hypot(self.travel, ROTATION_LENGTH * (self.th1 + self.th2))
@@ -131,6 +163,17 @@ class _Piece:
             return self.end.copy()
         if u <= 0.0:
             return self.start.copy()
+        return pin.SE3(*self._pose_arrays(u))
+
+    def target(self, u: float) -> Target:
+        """:meth:`pose` as a :class:`Target` (the same numbers, no SE3 built)."""
+        if u >= 1.0 or u <= 0.0:
+            T = self.end if u >= 1.0 else self.start
+            return _target(T)
+        return Target(*self._pose_arrays(u))
+
+    def _pose_arrays(self, u: float) -> tuple[np.ndarray, np.ndarray]:
+        """Rotation and position at 0 < u < 1 (fresh C-contiguous arrays)."""
         if self.arc:
             a = u * self.phi
             p = self.c + self.r * (math.cos(a) * self.e1 + math.sin(a) * self.e2)
@@ -140,7 +183,27 @@ class _Piece:
             R = _slerp(self.R0, self.w1, u / self.u_via, self.th1 > NO_TURN)
         else:
             R = _slerp(self.Rv, self.w2, (u - self.u_via) / (1.0 - self.u_via), self.th2 > NO_TURN)
-        return pin.SE3(R, p)
+        return np.ascontiguousarray(R, dtype=float), p
+
+    def arrays(self) -> PieceArrays:
+        """This segment's constants for the compiled :func:`~.pose_kernel.piece_pose`
+        (built once)."""
+        if self._arrays is None:
+            f64 = np.ascontiguousarray
+            z3 = np.zeros(3)
+            arc = self.arc
+            self._arrays = PieceArrays(
+                bool(arc), f64(z3 if arc else self.p0, dtype=float),
+                f64(z3 if arc else self.dp, dtype=float), f64(self.c if arc else z3, dtype=float),
+                f64(self.e1 if arc else z3, dtype=float), f64(self.e2 if arc else z3, dtype=float),
+                float(self.r) if arc else 0.0, float(self.phi) if arc else 0.0,
+                f64(self.R0, dtype=float), f64(self.w1, dtype=float), bool(self.th1 > NO_TURN),
+                f64(self.Rv, dtype=float), f64(self.w2, dtype=float), bool(self.th2 > NO_TURN),
+                float(self.u_via), f64(self.start.rotation, dtype=float),
+                f64(self.start.translation, dtype=float), f64(self.end.rotation, dtype=float),
+                f64(self.end.translation, dtype=float),
+            )  # fmt: skip
+        return self._arrays
 
     def steps(self, max_p: float, max_r: float) -> int:
         """Fewest equal steps of u keeping each within ``max_p`` (m, along the circle or line:
@@ -217,6 +280,35 @@ class CartesianPath:
             return self.start.copy()
         i, u = self._locate(s)
         return self._pieces[i].pose(u)
+
+    def target_at(self, s: float) -> Target:
+        """:meth:`pose_at` as a :class:`Target`."""
+        s = min(max(float(s), 0.0), 1.0)
+        if s == 0.0:
+            return _target(self.start)
+        i, u = self._locate(s)
+        return self._pieces[i].target(u)
+
+    def sample_targets(self, max_step: tuple[float, float]) -> tuple[list[Target], np.ndarray]:
+        """:meth:`sample` as :class:`Target` s (the same poses and ``s``)."""
+        counts = self._counts(max_step)
+        start = _target(self.start)
+        poses, ss = [start], [0.0]
+        for piece, n, a, b in zip(self._pieces, counts, self._starts, self.ends, strict=True):
+            for k in range(1, n + 1):
+                u = k / n
+                poses.append(piece.target(u))
+                ss.append(b if k == n else a + u * (b - a))
+        return poses, np.array(ss)
+
+    def piece_at(self, s: float) -> tuple[PieceArrays, float]:
+        """The segment (:meth:`_Piece.arrays`) and its parameter u whose pose is
+        :meth:`pose_at` ``(s)`` (for the compiled :func:`~.pose_kernel.piece_pose`)."""
+        s = min(max(float(s), 0.0), 1.0)
+        if s == 0.0:
+            return self._pieces[0].arrays(), 0.0
+        i, u = self._locate(s)
+        return self._pieces[i].arrays(), u
 
     def sample(self, max_step: tuple[float, float]) -> tuple[list[pin.SE3], np.ndarray]:
         """Poses along the path and their ``s``, consecutive ones within ``max_step``.
