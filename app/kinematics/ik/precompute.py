@@ -34,6 +34,7 @@ from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 
 if TYPE_CHECKING:
     from app.kinematics.analytic_ik import Planar2, URType
+    from app.kinematics.ik.annotate import AnnotationConstants
     from app.kinematics.ik.branches import BranchForm
     from app.kinematics.ik.failure import ReachParts
 
@@ -118,7 +119,7 @@ class IKChain:
         from app.kinematics.ik.warmup import warm_up
 
         warm_up()  # the kernels (once per process)
-        _ = self.poses, self.search_constants
+        _ = self.poses, self.search_constants, self.annotation
         analytic_ik.prepare(self._robot, self)
         return self
 
@@ -186,6 +187,14 @@ class IKChain:
         from app.kinematics.ik.branches import detect_branch_form
 
         return detect_branch_form(self._robot, self)
+
+    @cached_property
+    def annotation(self) -> AnnotationConstants | None:
+        """The compiled annotation's constants (:func:`app.kinematics.ik.annotate.
+        annotation_constants`), or None: Pinocchio labels and measures the answers."""
+        from app.kinematics.ik.annotate import annotation_constants
+
+        return annotation_constants(self._robot, self)
 
     @cached_property
     def reach_parts(self) -> ReachParts | None:

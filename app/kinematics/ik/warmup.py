@@ -12,7 +12,7 @@ from __future__ import annotations
 import threading
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import kernel, search_kernel
+from app.kinematics.ik import annotate, kernel, search_kernel
 from app.kinematics.jit import available
 
 _LOCK = threading.Lock()
@@ -38,6 +38,7 @@ def warm_up() -> None:
         kernel.warm_up()
         search_kernel.warm_up()
         analytic_ik.warm_up()
+        annotate.warm_up()
         _warmed = True  # only now: every kernel is ready
 
 
@@ -49,7 +50,7 @@ def kernel_cache_stats() -> dict[str, int]:
     from numba.core.dispatcher import Dispatcher
 
     loaded = compiled = 0
-    for module in (kernel, search_kernel, analytic_ik.ur):
+    for module in (kernel, search_kernel, annotate, analytic_ik.ur):
         for obj in vars(module).values():
             # a kernel imported by another module is counted in its own module only
             if isinstance(obj, Dispatcher) and obj.__module__ == module.__name__:
