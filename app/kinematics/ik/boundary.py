@@ -114,6 +114,17 @@ class SearchState(NamedTuple):
     counters: np.ndarray
 
 
+def reset_state(state: SearchState, qa: list[float], best: float, counters: list[int]) -> None:
+    """Make a used ``state`` a fresh one (as :func:`new_state`) starting from ``qa``, with
+    ``best`` the best energy so far and ``counters`` (:data:`COUNTERS`, phase 0): the
+    search copies ``qa`` into ``q_ref`` and ``best_q`` in phase 0, and recomputes the table
+    distances and the nearest samples (their flags are 0), so nothing of the last query
+    is read. Three writes instead of seven allocations; the arrays stay in cache."""
+    state.qa[:] = qa
+    state.best[0] = best
+    state.counters[:] = counters
+
+
 def new_state(qa: np.ndarray, best: float, n_near: int, n_table: int) -> SearchState:
     """A fresh state starting from ``qa`` ((k,) float64, C-contiguous: taken, not copied),
     ``best`` the best energy so far, ``n_near`` nearest samples to rank (at most the table's

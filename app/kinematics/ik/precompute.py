@@ -35,6 +35,7 @@ from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 if TYPE_CHECKING:
     from app.kinematics.analytic_ik import Planar2, URType
     from app.kinematics.ik.annotate import AnnotationConstants
+    from app.kinematics.ik.boundary import SearchState
     from app.kinematics.ik.branches import BranchForm
     from app.kinematics.ik.failure import ReachParts
 
@@ -109,6 +110,10 @@ class IKChain:
         self.wire_is_pin = robot.model.nq == robot.n and np.array_equal(
             robot.to_pin(np.arange(robot.n, dtype=float)), np.arange(robot.n)
         )
+        #: One idle compiled-search state per thread (:func:`app.kinematics.ik.compiled.
+        #: run_compiled` takes it and puts it back): the next query on that thread reuses
+        #: its arrays, hot in cache, instead of allocating them.
+        self.idle_states: dict[int, SearchState] = {}
         self._robot = robot
 
     def prepare(self) -> IKChain:
