@@ -49,7 +49,8 @@ class AnnotationConstants(NamedTuple):
 
     ``labelled``: the chain has branch flags; ``kind``, ``elbow``, ``tip_axis4``:
     :func:`app.kinematics.ik.branch_kernel.form_arrays` of its form; ``wrist`` (3,): the
-    wrist point in the kernel's frame of the fifth moving joint (m; zeros without one).
+    wrist point in the kernel's frame of the fifth moving joint (m; zeros without one);
+    ``tail``: every argument of :func:`annotation` after ``qa``, built once.
     """
 
     labelled: bool
@@ -57,6 +58,7 @@ class AnnotationConstants(NamedTuple):
     elbow: bool
     tip_axis4: bool
     wrist: np.ndarray
+    tail: tuple
 
 
 @jit
@@ -182,7 +184,7 @@ def annotation_constants(robot: RobotModel, ch: IKChain) -> AnnotationConstants 
     form = ch.branch_form
     wrist = np.zeros(3)
     if form is None:
-        return AnnotationConstants(False, 0, False, False, wrist)
+        return _constants(cc, False, 0, False, False, wrist)
     kind, elbow, tip_axis4 = branch_kernel.form_arrays(form)
     if form.wrist is not None:
         # the kernel's frame of joint 5 and Pinocchio's share the link: map the wrist point
@@ -192,7 +194,14 @@ def annotation_constants(robot: RobotModel, ch: IKChain) -> AnnotationConstants 
         world = data.oMi[form.pin_ids[4]].act(np.asarray(form.wrist, dtype=float))
         R, p = _frame_after(cc, np.zeros(ch.k), 4)
         wrist = R.T @ (world - p)
-    return AnnotationConstants(True, int(kind), bool(elbow), bool(tip_axis4), wrist)
+    return _constants(cc, True, int(kind), bool(elbow), bool(tip_axis4), wrist)
+
+
+def _constants(cc, labelled: bool, kind: int, elbow: bool, tip_axis4: bool, wrist: np.ndarray):
+    """:class:`AnnotationConstants` with its ``tail`` (the chain's kinematics first)."""
+    wrist = np.ascontiguousarray(wrist, dtype=np.float64)
+    tail = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, labelled, kind, elbow, tip_axis4, wrist)
+    return AnnotationConstants(labelled, kind, elbow, tip_axis4, wrist, tail)
 
 
 def _frame_after(cc, qa: np.ndarray, joint: int) -> tuple[np.ndarray, np.ndarray]:
@@ -214,16 +223,21 @@ def annotate(ch: IKChain, qa: np.ndarray) -> tuple[str | None, float]:
     """(branch label or None for a chain without flags, manipulability) of the chain
     configuration ``qa`` (k,) (rad or m); requires :attr:`IKChain.annotation`."""
     a = ch.annotation
-    cc = ch.compiled
-    args = (np.ascontiguousarray(qa, dtype=np.float64), cc.C, cc.t, cc.prism, cc.last_C,
-            cc.last_t, a.labelled, a.kind, a.elbow, a.tip_axis4, a.wrist)  # fmt: skip
-    code, w = direct(annotation, *args)(*args)
-    return (branch_kernel.label(ch.branch_form, code) if a.labelled else None), float(w)
+    code, w = _entry()(np.ascontiguousarray(qa, dtype=np.float64), *a.tail)
+    return (branch_kernel.label(ch.branch_form, code) if a.labelled else None), w
+
+
+def _entry():
+    """:func:`annotation`'s compiled entry point (:func:`app.kinematics.jit.direct`)."""
+    return direct(annotation, *_EXAMPLE)
+
+
+_Z3 = np.zeros(3)
+#: Arguments of the types :func:`annotate` passes (a 1-joint chain).
+_EXAMPLE = (np.zeros(1), np.eye(3)[None].copy(), np.zeros((1, 3)), np.zeros(1, np.bool_),
+            np.eye(3), _Z3, False, 0, False, False, _Z3)  # fmt: skip
 
 
 def warm_up() -> None:
     """Compile :func:`annotation` for the argument types :func:`annotate` passes."""
-    z3 = np.zeros(3)
-    args = (np.zeros(1), np.eye(3)[None].copy(), np.zeros((1, 3)), np.zeros(1, np.bool_),
-            np.eye(3), z3, False, 0, False, False, z3)  # fmt: skip
-    direct(annotation, *args)(*args)
+    _entry()(*_EXAMPLE)
