@@ -44,14 +44,13 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     best0 = s.best_energy
     n_table = consts.table.shape[0]
     n_near = min(s.parameters.nearest, n_table)
-    counters = [s.iterations, s.restarts, 0, 0, 0, 0, n_near]
     state = _take_state(ch)
     if state is None:
         qa = np.ascontiguousarray(s.q_seed[ch.active], dtype=np.float64)  # a fresh copy
         state = new_state(qa, best0, n_near, n_table)
-        state.counters[:] = counters
+        state.counters[ITERATIONS], state.counters[RESTARTS] = s.iterations, s.restarts
     else:
-        reset_state(state, s.q_seed[ch.active], best0, counters)
+        reset_state(state, s.q_seed[ch.active], best0, s.iterations, s.restarts, n_near)
     st, qa = state.counters, state.qa
     cap = max_iterations if max_iterations is not None else 1 << 62
     table_restarts = s.rng is None
