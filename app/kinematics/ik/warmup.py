@@ -12,7 +12,7 @@ from __future__ import annotations
 import threading
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import annotate, kernel, search_kernel
+from app.kinematics.ik import annotate, branch_kernel, kernel, search_kernel
 from app.kinematics.jit import available
 
 _LOCK = threading.Lock()
@@ -50,7 +50,7 @@ def kernel_cache_stats() -> dict[str, int]:
     from numba.core.dispatcher import Dispatcher
 
     loaded = compiled = 0
-    for module in (kernel, search_kernel, annotate, analytic_ik.ur):
+    for module in (kernel, search_kernel, annotate, branch_kernel, analytic_ik.ur):
         for obj in vars(module).values():
             # a kernel imported by another module is counted in its own module only
             if isinstance(obj, Dispatcher) and obj.__module__ == module.__name__:
