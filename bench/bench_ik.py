@@ -30,6 +30,7 @@ import os
 import sys
 import time
 from dataclasses import replace
+from pathlib import Path
 
 import httpx
 import numpy as np
@@ -291,9 +292,94 @@ def over_http(reg: Registry, n: int) -> list[tuple]:
     return rows
 
 
+#: A child timing ``ik.solve`` in a tight loop with the code of the checkout in argv[1]:
+#: prints {"robot" or "robot+annotate": best-of-3 thread CPU µs per solve}.
+_TIGHT_CHILD = """
+import json, sys, time
+sys.path.insert(0, sys.argv[1])
+import numpy as np, pinocchio as pin
+from app.kinematics import ik
+from app.kinematics.ik.precompute import ik_chain
+from app.kinematics.ik.problem import IKOptions
+from app.robots.registry import Registry
+n = int(sys.argv[2])
+reg, out = Registry(), {}
+for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0")):
+    robot = reg.get(rid)
+    ch = ik_chain(robot, frame)
+    rng = np.random.default_rng(0)
+    goals = []
+    for _ in range(n):
+        q = robot.mid_range()
+        q[ch.active] = rng.uniform(ch.sample_lo, ch.sample_hi)
+        pin.forwardKinematics(robot.model, robot.data, robot.to_pin(q))
+        goals.append(pin.updateFramePlacement(robot.model, robot.data, ch.frame_id).copy())
+    opts = IKOptions(frame=frame, tolerance=(1e-5, 1e-5), timeout_ms=5.0)
+    for annotate in (False, True):
+        for g in goals[:200]:
+            ik.solve(robot, g, opts, annotate=annotate)
+        best = float("inf")
+        for _ in range(3):
+            t0 = time.thread_time()
+            for g in goals:
+                ik.solve(robot, g, opts, annotate=annotate)
+            best = min(best, (time.thread_time() - t0) / n * 1e6)
+        out[rid + ("+annotate" if annotate else "")] = best
+print(json.dumps(out))
+"""
+
+
+def tight_loop(n: int, rounds: int, trees: dict[str, str]) -> dict[str, dict[str, list[float]]]:
+    """Checkout label → case → µs per solve of each round: ``ik.solve`` in a tight loop
+    (thread CPU, best of 3 passes over ``n`` targets, TRAC-IK protocol, seed 0), one child
+    process per checkout and round, the checkouts alternating."""
+    import json
+    import subprocess
+
+    out: dict[str, dict[str, list[float]]] = {label: {} for label in trees}
+    for _ in range(rounds):
+        for label, tree in trees.items():
+            done = subprocess.run([sys.executable, "-c", _TIGHT_CHILD, tree, str(n)],
+                                  capture_output=True, text=True, check=True)  # fmt: skip
+            for case, us in json.loads(done.stdout.strip().splitlines()[-1]).items():
+                out[label].setdefault(case, []).append(us)
+    return out
+
+
+def print_tight_loop() -> None:
+    """The tight-loop table, this checkout beside ``DENAVIT_BENCH_BASELINE_TREE`` (a
+    checkout of the older code) when given: ``DENAVIT_BENCH_IK_TIGHT`` targets (default
+    2000; 0 skips), 3 alternating rounds."""
+    n = int(os.environ.get("DENAVIT_BENCH_IK_TIGHT", "2000"))
+    if n <= 0:
+        return
+    here = str(Path(__file__).resolve().parents[1])
+    trees = {"this code": here}
+    base = os.environ.get("DENAVIT_BENCH_BASELINE_TREE")
+    if base:
+        trees = {"baseline tree": base} | trees
+    load = os.getloadavg()[0]
+    print(f"\n### Tight loop: ik.solve per target, thread CPU µs, best of 3 passes over {n} "
+          f"targets; checkouts alternating, 3 rounds (load {load:.1f})\n")  # fmt: skip
+    res = tight_loop(n, 3, trees)
+    cases = list(next(iter(res.values())))
+    print("| case | " + " | ".join(trees) + (" | this ÷ baseline |" if base else " |"))
+    print("|---|" + "---:|" * (len(trees) + bool(base)))
+    for case in cases:
+        cells = [", ".join(f"{v:.1f}" for v in res[label][case]) for label in trees]
+        row = f"| {case} | " + " | ".join(cells)
+        if base:
+            ratio = min(res["this code"][case]) / min(res["baseline tree"][case])
+            row += f" | {ratio:.2f} |"
+        print(row + (" |" if not base else ""))
+
+
 def main() -> None:
     n = int(os.environ.get("DENAVIT_BENCH_IK_N", "10000"))
     n_http = int(os.environ.get("DENAVIT_BENCH_IK_HTTP", "300"))
+    if os.environ.get("DENAVIT_BENCH_IK_TIGHT_ONLY"):
+        print_tight_loop()
+        return
     reg = Registry()
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else math.nan
     print(
@@ -338,6 +424,7 @@ def main() -> None:
         print("|---|---|---|---|---|---|")
         for rid, name, rate, mean, p50, its in loops_side_by_side(reg, n_ab):
             print(f"| {rid} | {name} | {100 * rate:.2f}% | {mean:.3f} | {p50:.3f} | {its:.1f} |")
+    print_tight_loop()
     if n_http > 0:
         print(f"\n### Over HTTP: {n_http} requests per robot, uvicorn 1 worker, loopback\n")
         print("| robot | requests | solve rate | mean round trip (ms) | p50 (ms) | p99 (ms) "

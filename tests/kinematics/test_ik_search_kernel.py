@@ -171,3 +171,36 @@ def test_cancel_is_read_between_chunks(registry) -> None:
     with pytest.raises(Cancelled):
         ik.solve(robot, target, options, cancel=cancel, clock=clock)
     assert clock.count == 4  # the budget's start, then three reads
+
+
+@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
+def test_a_reused_search_state_gives_the_answers_of_a_fresh_one(
+    registry, robot_id: str, frame: str
+) -> None:
+    """Queries on one thread reuse the chain's idle search state (ik.compiled): each answer
+    (q, iterations, restarts, errors) is the one of a search from freshly allocated arrays,
+    whatever the queries before it (reachable, unreachable-in-budget, other seeds)."""
+    robot = registry.get(robot_id)
+    ch = ik.precompute.ik_chain(robot, frame)
+    rng = np.random.default_rng(31)
+    opts = IKOptions(frame=frame, timeout_ms=NO_DEADLINE_MS, max_iterations=400, analytic=False)
+    queries = []
+    for _ in range(12):
+        q = random_q(robot, rng)
+        target = se3(reference_pose(robot, q, frame))
+        # the default seed (far: a jump to the table), and a near one (tracking: the attempt
+        # from the seed, with its null-space pull towards it on the redundant arm)
+        queries += [(target, None), (target, q + rng.normal(0.0, 0.05, q.shape))]
+    starved = replace(opts, max_iterations=3)  # stops mid-search: the state is left used
+    answers = {}
+    for fresh in (True, False):
+        out = []
+        for i, (target, seed) in enumerate(queries):
+            if fresh:
+                ch.idle_states.clear()
+            o = starved if i % 5 == 3 else opts
+            r = ik.solve(robot, target, o, seed=seed)
+            out.append((r.success, r.q.tolist(), r.iterations, r.restarts, r.position_error))
+        answers[fresh] = out
+    assert answers[False] == answers[True]
+    assert ch.idle_states  # the state was kept for reuse

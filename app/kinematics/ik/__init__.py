@@ -13,6 +13,7 @@ The package, one concept per module:
 - :mod:`.kernel`, :mod:`.search_kernel`: the compiled attempt and the compiled whole search
   (Numba), and the named tuples they take;
 - :mod:`.compiled`: the driver of the compiled search, full pose only;
+- :mod:`.annotate`: an answer's branch label and manipulability in compiled code;
 - :mod:`.warmup`: compiling every kernel once per process;
 - here: :func:`solve`, which ties them together.
 

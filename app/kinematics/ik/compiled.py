@@ -13,18 +13,20 @@ Both loops take the same iterates. The chain's constants
 
 from __future__ import annotations
 
+import threading
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from app.kinematics.errors import Cancelled
 from app.kinematics.ik import search_kernel
-from app.kinematics.ik.boundary import ITERATIONS, RESTARTS, new_state
+from app.kinematics.ik.boundary import ITERATIONS, RESTARTS, SearchState, new_state, reset_state
 from app.kinematics.ik.kernel import CAPPED, CONVERGED
 from app.kinematics.ik.search_kernel import JUMP
 from app.kinematics.jit import direct
 
 if TYPE_CHECKING:
+    from app.kinematics.ik.precompute import IKChain
     from app.kinematics.ik.search import Search
 
 
@@ -41,10 +43,15 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     tol_p2, tol_r2 = s.tol_p**2, s.tol_r**2
     best0 = s.best_energy
     n_table = consts.table.shape[0]
-    qa = np.ascontiguousarray(s.q_seed[ch.active], dtype=np.float64)  # a fresh copy
-    state = new_state(qa, best0, min(s.parameters.nearest, n_table), n_table)
+    n_near = min(s.parameters.nearest, n_table)
+    state = _take_state(ch)
+    if state is None:
+        qa = np.ascontiguousarray(s.q_seed[ch.active], dtype=np.float64)  # a fresh copy
+        state = new_state(qa, best0, n_near, n_table)
+        state.counters[ITERATIONS], state.counters[RESTARTS] = s.iterations, s.restarts
+    else:
+        reset_state(state, s.q_seed[ch.active], best0, s.iterations, s.restarts, n_near)
     st, qa = state.counters, state.qa
-    st[ITERATIONS], st[RESTARTS] = s.iterations, s.restarts
     cap = max_iterations if max_iterations is not None else 1 << 62
     table_restarts = s.rng is None
     # the seed check only (as the Python loop) when the budget is already spent
@@ -78,3 +85,11 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
             s.best_energy = float(best[0])
             if not s.solutions:  # (only a failure reports the best iterate)
                 s.best_q = s.wire(state.best_q)
+        ch.idle_states[threading.get_ident()] = state  # free again for this thread
+
+
+def _take_state(ch: IKChain) -> SearchState | None:
+    """This thread's idle :class:`SearchState` of ``ch`` (:attr:`IKChain.idle_states`),
+    removed until the query puts it back; None: a fresh one (the first query on this
+    thread, or a re-entrant solve from an ``accept`` predicate)."""
+    return ch.idle_states.pop(threading.get_ident(), None)

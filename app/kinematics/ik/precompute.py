@@ -34,6 +34,8 @@ from app.kinematics.models import MAX_JOINT_VALUE, RobotModel
 
 if TYPE_CHECKING:
     from app.kinematics.analytic_ik import Planar2, URType
+    from app.kinematics.ik.annotate import AnnotationConstants
+    from app.kinematics.ik.boundary import SearchState
     from app.kinematics.ik.branches import BranchForm
     from app.kinematics.ik.failure import ReachParts
 
@@ -108,6 +110,10 @@ class IKChain:
         self.wire_is_pin = robot.model.nq == robot.n and np.array_equal(
             robot.to_pin(np.arange(robot.n, dtype=float)), np.arange(robot.n)
         )
+        #: One idle compiled-search state per thread (:func:`app.kinematics.ik.compiled.
+        #: run_compiled` takes it and puts it back): the next query on that thread reuses
+        #: its arrays, hot in cache, instead of allocating them.
+        self.idle_states: dict[int, SearchState] = {}
         self._robot = robot
 
     def prepare(self) -> IKChain:
@@ -118,7 +124,7 @@ class IKChain:
         from app.kinematics.ik.warmup import warm_up
 
         warm_up()  # the kernels (once per process)
-        _ = self.poses, self.search_constants
+        _ = self.poses, self.search_constants, self.annotation
         analytic_ik.prepare(self._robot, self)
         return self
 
@@ -186,6 +192,14 @@ class IKChain:
         from app.kinematics.ik.branches import detect_branch_form
 
         return detect_branch_form(self._robot, self)
+
+    @cached_property
+    def annotation(self) -> AnnotationConstants | None:
+        """The compiled annotation's constants (:func:`app.kinematics.ik.annotate.
+        annotation_constants`), or None: Pinocchio labels and measures the answers."""
+        from app.kinematics.ik.annotate import annotation_constants
+
+        return annotation_constants(self._robot, self)
 
     @cached_property
     def reach_parts(self) -> ReachParts | None:

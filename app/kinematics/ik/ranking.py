@@ -44,6 +44,7 @@ import pinocchio as pin
 from app.kinematics.analysis import yoshikawa_batch
 from app.kinematics.collision import collision_model
 from app.kinematics.errors import InvalidInputError
+from app.kinematics.ik.annotate import annotate as compiled_annotation
 from app.kinematics.ik.branches import branch_form, branch_label
 from app.kinematics.jacobian import frame_jacobian_by_id
 from app.kinematics.models import RobotModel
@@ -169,12 +170,20 @@ def representatives(
     """
     if not solutions:
         return []
-    if wanted == 1 and rank_by == "seed_distance" and not annotate and clearance is None:
-        if len(solutions) == 1 and not robot.has_continuous:  # the hot path: nothing to rank
-            only = solutions[0]
+    single = wanted == 1 and rank_by == "seed_distance" and clearance is None
+    if single and len(solutions) == 1 and (not annotate or ch.annotation is not None):
+        # the hot path: nothing to rank; the labels, if wanted, compiled (:mod:`.annotate`)
+        only = solutions[0]
+        if robot.has_continuous:
+            only.seed_distance = float(joint_distance(robot, only.q, seed).max(initial=0.0))
+        else:
             moves = map(abs, map(sub, only.q.tolist(), seed.tolist()))
             only.seed_distance = max(moves, default=0.0)
-            return [only]
+        if annotate:
+            label, only.manipulability = compiled_annotation(ch, only.q[ch.active])
+            only.branch = "cluster_0" if label is None else label
+        return [only]
+    if single and not annotate:
         best, best_order = solutions[0], (math.inf, math.inf)
         for s in solutions:
             d = joint_distance(robot, s.q, seed)

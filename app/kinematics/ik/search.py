@@ -179,7 +179,8 @@ class Search:
         robot = self.robot
         q = self.q_seed.copy()
         q[self.ch.active] = qa
-        q = robot.wrap(q)
+        if robot.has_continuous:
+            q = robot.wrap(q)
         if not _within(q.tolist(), self.ch.wire_lower, self.ch.wire_upper):
             if self.outside_limits is None:
                 self._note_outside_limits(q)

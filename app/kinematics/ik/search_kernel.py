@@ -97,6 +97,8 @@ def search(state, consts, H, tol_p2, tol_r2, cap, chunk, table_restarts):  # pra
     n_near = st[N_NEAR]
     if st[PHASE] == 0:  # the seed: jump to the nearest table sample when it is far
         st[PHASE] = 2
+        q_ref[:] = qa  # a reused state (:func:`.boundary.reset_state`) starts from the seed
+        best_q[:] = qa
         if consts.nearest_first and st[ITERATIONS] < cap:
             ep2, er2, tr = kernel.pose_error(qa, chain, Rt, pt)
             if not (ep2 <= tol_p2 and er2 <= tol_r2):

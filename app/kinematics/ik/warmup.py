@@ -14,7 +14,7 @@ from __future__ import annotations
 import threading
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import branch_kernel, kernel, search_kernel
+from app.kinematics.ik import annotate, branch_kernel, kernel, search_kernel
 from app.kinematics.jit import available
 from app.kinematics.paths import point_kernel, pose_kernel
 
@@ -41,6 +41,7 @@ def warm_up() -> None:
         kernel.warm_up()
         search_kernel.warm_up()
         analytic_ik.warm_up()
+        annotate.warm_up()
         point_kernel.warm_up()  # the branch flags and a segment's pose with it
         _warmed = True  # only now: every kernel is ready
 
@@ -53,7 +54,8 @@ def kernel_cache_stats() -> dict[str, int]:
     from numba.core.dispatcher import Dispatcher
 
     loaded = compiled = 0
-    for module in (kernel, search_kernel, analytic_ik.ur, branch_kernel, point_kernel, pose_kernel):
+    kernels = (kernel, search_kernel, annotate, branch_kernel, analytic_ik.ur)
+    for module in (*kernels, point_kernel, pose_kernel):
         for obj in vars(module).values():
             # a kernel imported by another module is counted in its own module only
             if isinstance(obj, Dispatcher) and obj.__module__ == module.__name__:
