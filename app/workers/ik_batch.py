@@ -365,9 +365,14 @@ class BatchPool:
         try:
             start = 0
             for size in sizes:
-                fut = executor.submit(
-                    _worker_chunk, recipe, segment, n, dof, start, start + size, task
-                )
+                try:
+                    fut = executor.submit(
+                        _worker_chunk, recipe, segment, n, dof, start, start + size, task
+                    )
+                except BrokenProcessPool:
+                    raise
+                except RuntimeError:  # "cannot schedule new futures after shutdown"
+                    raise CancelledError() from None
                 futures.append((start, start + size, fut))
                 start += size
             for start, stop, fut in futures:

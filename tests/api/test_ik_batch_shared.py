@@ -8,11 +8,14 @@ every field but the solve time is deterministic.
 
 from __future__ import annotations
 
+import threading
+
 import numpy as np
 import pinocchio as pin
 import pytest
 
 from app.kinematics import ik
+from app.kinematics.errors import UnavailableError
 from app.kinematics.ik.batch import (
     BYTE_COLUMNS,
     FLOAT_COLUMNS,
@@ -143,3 +146,38 @@ def test_answers_on_a_buffer_are_shared_and_copied_out() -> None:
     c = a.copy()
     a.q[2] = 0.0
     assert c.q[2].tolist() == list(range(7))
+
+
+def test_shutdown_during_a_batch_unlinks_the_segment(pool, registry, monkeypatch) -> None:
+    """The pool stopped (application shutdown) while a batch of slow targets runs, in 32
+    chunks of 2 (at most 5 start: 2 running, 3 queued; the rest are withdrawn): the batch
+    fails with a 503 error naming ``targets`` and its segment is unlinked; the pool serves
+    the next batch with fresh workers."""
+    monkeypatch.setattr(ik_batch, "chunk_sizes", lambda n, *_: [2] * (n // 2))
+    robot = registry.get("panda")
+    slow = [pin.SE3(np.eye(3), np.array([0.0, 1.0, 0.333]))] * 64  # beyond reach, in the bound
+    options = IKOptions(frame="panda_link8", mode="position", timeout_ms=50.0)
+    task = BatchTask(robot.mid_range(), options)
+    failed: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            pool.solve(robot, slow, task)
+        except UnavailableError as exc:
+            failed.append(exc)
+
+    thread = threading.Thread(target=run)
+    thread.start()
+    event = threading.Event()
+    while thread.is_alive():  # until chunks of the batch are in the pool
+        executor = pool._executor
+        if executor is not None and executor._pending_work_items and leftover_segments():
+            break
+        event.wait(0.005)
+    pool.shutdown()
+    thread.join(timeout=60)
+    assert not thread.is_alive() and len(failed) == 1 and failed[0].field == "targets"
+    assert not leftover_segments()
+    capped = IKOptions(frame="panda_link8", timeout_ms=1000.0, max_iterations=400)
+    small = BatchTask(robot.mid_range(), capped)
+    assert pool.solve(robot, _targets(robot, "panda_link8", 40, seed=3), small).solved >= 37
