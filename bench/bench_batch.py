@@ -31,6 +31,7 @@ import pickle
 import time
 from collections.abc import Callable, Iterator
 from multiprocessing.reduction import ForkingPickler
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -71,8 +72,21 @@ def _one_chunk_per_process() -> Iterator[None]:
         ik_batch.chunk_sizes = saved
 
 
+def _cpu_s(pool: BatchPool) -> float:
+    """CPU seconds used so far by this process (every thread) and the pool's workers (every
+    thread, from the kernel's ``/proc/<pid>/task/<tid>/schedstat``, ns)."""
+    total = time.process_time()
+    executor = pool._executor
+    for pid in [] if executor is None else list(executor._processes):
+        for task in Path(f"/proc/{pid}/task").glob("*"):
+            with contextlib.suppress(OSError):
+                total += int((task / "schedstat").read_text().split()[0]) * 1e-9
+    return total
+
+
 def rates(n: int, rounds: int) -> list[tuple]:
-    """Rows: robot, processes, targets/s of every round, solved."""
+    """Rows: robot, processes, targets/s of every round, solved, CPU µs per target of every
+    round (the server's and the workers')."""
     reg = Registry()
     pools: dict[int | str, BatchPool] = {1: BatchPool(1), 2: BatchPool(2), CEILING: BatchPool(2)}
     rows = []
@@ -84,17 +98,19 @@ def rates(n: int, rounds: int) -> list[tuple]:
             for pool in pools.values():  # warm: workers started, robot built, kernels loaded
                 pool.solve(robot, goals[:200], task)
             speed: dict[int | str, list[float]] = {p: [] for p in pools}
+            cpu: dict[int | str, list[float]] = {p: [] for p in pools}
             solved = dict.fromkeys(pools, 0)
             for _ in range(rounds):
                 for p, pool in pools.items():
                     chunks = _one_chunk_per_process() if p == CEILING else contextlib.nullcontext()
                     with chunks:
-                        t0 = time.perf_counter()
+                        c0, t0 = _cpu_s(pool), time.perf_counter()
                         out = pool.solve(robot, goals, task)
                         speed[p].append(n / (time.perf_counter() - t0))
+                        cpu[p].append((_cpu_s(pool) - c0) * 1e6 / n)
                     solved[p] = out.solved
             for p in pools:
-                rows.append((rid, p, speed[p], solved[p]))
+                rows.append((rid, p, speed[p], solved[p], cpu[p]))
     finally:
         for pool in pools.values():
             pool.shutdown()
@@ -196,18 +212,25 @@ def main() -> None:
         f"{n} targets per robot, 5 ms each, {rounds} alternating rounds"
     )
     print("\n| robot | processes | targets/s per round | best | median | solved "
-          "| speed-up (medians) |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|")
+          "| speed-up (medians) | CPU µs/target (median) |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|")
     base: dict[str, float] = {}
     ratio: dict[str, float] = {}
-    for rid, p, speed, solved in rates(n, rounds):
-        med = float(np.median(speed))
+    cpu1: dict[str, float] = {}
+    projected: dict[str, float] = {}
+    for rid, p, speed, solved, cpu in rates(n, rounds):
+        med, cpu_med = float(np.median(speed)), float(np.median(cpu))
         base.setdefault(rid, med)
+        cpu1.setdefault(rid, cpu_med)
         if p == 2:
             ratio[rid] = med / base[rid]
+            projected[rid] = 2 * cpu1[rid] / cpu_med
         per_round = ", ".join(f"{s:.0f}" for s in speed)
         print(f"| {rid} | {p} | {per_round} | {max(speed):.0f} | {med:.0f} | {solved}/{n} "
-              f"| {med / base[rid]:.2f}× |")  # fmt: skip
+              f"| {med / base[rid]:.2f}× | {cpu_med:.1f} |")  # fmt: skip
+    print("\nCPU bound of 2 processes on 2 idle cores (2 × CPU per target of 1 process / CPU "
+          "per target of the pool, server and workers; the machine's own scaling apart): "
+          + ", ".join(f"{rid} {r:.2f}×" for rid, r in projected.items()))  # fmt: skip
     m = min(n, 2000)
     print(f"\nAnswers between a worker and the server, µs per target ({m} answers, medians of "
           f"{max(rounds, 5)} alternating rounds):\n")  # fmt: skip

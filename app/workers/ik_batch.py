@@ -16,19 +16,23 @@ number of processes or on the chunking (:mod:`app.kinematics.ik.batch`). Collisi
 batches run in the pool too: obstacles are plain data, and each worker builds (and caches,
 per robot) its own collision model.
 
-Shared arrays, not pickled answers: the caller puts the batch's target matrices and room for
-its answer columns (:class:`~app.kinematics.ik.batch.BatchAnswers`) in one shared memory
-segment (:mod:`app.workers.shared_segment`, unlinked when the batch ends, however it ends);
-a chunk is a range of rows, and a worker writes its answers in place and returns only the
-rows' failure notes and its solve time. Per target, this costs the worker ~1 µs and the
-caller nothing, where building, pickling and unpickling one answer object cost ~10–15 µs
-(docs/benchmarks.md).
+Shared arrays, not pickled answers: the caller puts the batch's target matrices, room for
+its answer columns (:class:`~app.kinematics.ik.batch.BatchAnswers`) and the robot's pickled
+recipe in one shared memory segment (:mod:`app.workers.shared_segment`, unlinked when the
+batch ends, however it ends); a chunk is a range of rows plus the task, and a worker writes
+its answers in place and returns only the rows' failure notes and its CPU time. Per target
+this costs ~1.2 µs in the worker and ~1 µs in the caller (entries of the answer included),
+where building, pickling and unpickling one answer object cost ~9–12 µs in the worker and
+~7 µs in the caller (docs/benchmarks.md); the recipe (the robot's URDF text, ~15–20 kB) is
+read by a worker only when it has not built that robot yet, instead of travelling with
+every chunk.
 
-Chunks by measured cost: the pool keeps each robot's (and frame's) measured solve time per
-target (the workers' own clocks, a moving average), and cuts a batch into chunks of
-decreasing size (guided scheduling: each about a ``2 × processes``-th of what is left, of
-:data:`CHUNK_MIN_MS` to :data:`CHUNK_MAX_MS` of measured work), so that the chunks cost
-little to hand out and the workers run out of work together.
+Chunks by measured cost: the pool keeps each robot's (and frame's) solve time per target,
+measured by the workers' CPU clocks (a moving average: the work's cost, whatever else the
+machine runs), and cuts a batch into chunks of decreasing size (guided scheduling: each
+about a ``2 × processes``-th of what is left, of :data:`CHUNK_MIN_MS` to
+:data:`CHUNK_MAX_MS` of measured work), so that the chunks cost little to hand out and the
+workers run out of work together.
 
 Cancellation: the caller's ``cancel`` event is checked while waiting for each chunk; once
 set, chunks not yet started are withdrawn and :class:`~app.kinematics.errors.Cancelled` is
@@ -47,6 +51,7 @@ import hashlib
 import math
 import multiprocessing
 import multiprocessing.forkserver
+import pickle
 import queue
 import threading
 import time
@@ -74,10 +79,10 @@ CHUNK_MAX = 1024
 CHUNK_BUDGET_MS = 2000.0
 #: Measured work (ms) of the largest chunk: what a cancelled batch's running chunk usually
 #: still takes, and the grain of the first chunks.
-CHUNK_MAX_MS = 25.0
+CHUNK_MAX_MS = 50.0
 #: Measured work (ms) of the smallest chunk: the last chunks, which even out the workers'
-#: ends; a chunk's round trip through the pool is ~0.1–0.3 ms.
-CHUNK_MIN_MS = 2.0
+#: ends (a chunk costs the caller ~0.1–0.4 ms of CPU: submission, its round trip, waiting).
+CHUNK_MIN_MS = 4.0
 #: Solve time per target (µs) assumed for a robot and frame not measured yet.
 DEFAULT_COST_US = 100.0
 #: Weight of a chunk's measurement in the moving average of the cost per target.
@@ -136,6 +141,9 @@ class RobotRecipe:
         )
 
 
+#: Row → (reason, detail) of a batch's failures.
+Notes = dict[int, tuple[str | None, str | None]]
+
 #: The model's lazy-cache key of its batch recipe (:meth:`RobotRecipe.of`).
 RECIPE_KEY: LazyKey[RobotRecipe] = LazyKey("ik_batch_recipe", RobotRecipe)
 
@@ -152,45 +160,46 @@ def _worker_init() -> None:
     warm_up()
 
 
-def _worker_robot(recipe: RobotRecipe) -> RobotModel:
-    robot = _ROBOTS.get(recipe.key)
+def _worker_robot(key: str, buffer: memoryview, recipe_at: int, recipe_len: int) -> RobotModel:
+    """The robot of recipe ``key``: cached, or built from the recipe pickled at
+    ``recipe_at`` in the batch's segment (sent once per batch, not once per chunk)."""
+    robot = _ROBOTS.get(key)
     if robot is None:
+        recipe = pickle.loads(buffer[recipe_at : recipe_at + recipe_len])
         if len(_ROBOTS) >= _ROBOTS_MAX:
             _ROBOTS.pop(next(iter(_ROBOTS)))
-        robot = _ROBOTS[recipe.key] = recipe.build()
+        robot = _ROBOTS[key] = recipe.build()
     return robot
 
 
-def _worker_chunk(
-    recipe: RobotRecipe, segment: str, n: int, dof: int, start: int, stop: int, task: BatchTask
-) -> tuple[dict[int, tuple[str | None, str | None]], float] | None:
+#: What a chunk's rows need besides the task: segment name, targets in the batch, joints,
+#: (offset, length) of the pickled recipe in the segment, recipe key, first and end row.
+Rows = tuple[str, int, int, tuple[int, int], str, int, int]
+
+
+def _worker_chunk(rows: Rows, task: BatchTask) -> tuple[Notes, float] | None:
     """Targets ``start`` … ``stop − 1`` of a batch of ``n`` in the shared ``segment``
     (:meth:`BatchAnswers.on_buffer`), solved in a worker, their answers written in place.
-    Returns the rows' failure notes and the seconds spent solving; None when the segment is
-    gone (the batch was withdrawn before this chunk started)."""
-    robot = _worker_robot(recipe)
+    Returns the rows' failure notes and the CPU seconds spent on them (this process's
+    clock: the measured cost is the work's, whatever else the machine runs); None when the
+    segment is gone (the batch was withdrawn before this chunk started)."""
+    segment = rows[0]
     try:
         with shared_segment.attach(segment) as buffer:
-            return _solve_rows(robot, buffer, n, dof, start, stop, task)
+            return _solve_rows(buffer, rows, task)
     except FileNotFoundError:
         return None
 
 
-def _solve_rows(
-    robot: RobotModel,
-    buffer: memoryview,
-    n: int,
-    dof: int,
-    start: int,
-    stop: int,
-    task: BatchTask,
-) -> tuple[dict[int, tuple[str | None, str | None]], float]:
+def _solve_rows(buffer: memoryview, rows: Rows, task: BatchTask) -> tuple[Notes, float]:
     """:func:`_worker_chunk` on the mapped segment (no view on it outlives this call)."""
-    t0 = time.perf_counter()
+    t0 = time.process_time()
+    _, n, dof, (recipe_at, recipe_len), key, start, stop = rows
+    robot = _worker_robot(key, buffer, recipe_at, recipe_len)
     matrices, answers = BatchAnswers.on_buffer(buffer, n, dof)
     targets = [pin.SE3(T) for T in matrices[start:stop]]
     solve_into(robot, targets, task, answers, start=start)
-    return answers.notes, time.perf_counter() - t0
+    return answers.notes, time.process_time() - t0
 
 
 def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
@@ -200,11 +209,14 @@ def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> li
     targets and a budget within :data:`CHUNK_BUDGET_MS` where possible."""
     most = min(CHUNK_MAX, math.floor(CHUNK_MAX_MS * 1e3 / cost_us))
     most = max(1, min(most, math.floor(CHUNK_BUDGET_MS / timeout_ms)))
-    least = max(1, min(most, math.ceil(CHUNK_MIN_MS * 1e3 / cost_us)))
+    least = min(math.ceil(CHUNK_MIN_MS * 1e3 / cost_us), math.ceil(n / processes))
+    least = max(1, min(most, least))  # a small batch is still shared by the processes
     sizes = []
     left = n
     while left > 0:
         size = min(left, most, max(least, math.ceil(left / (2 * processes))))
+        if 2 * (left - size) < least and left <= most:  # no crumb after the last chunk
+            size = left
         sizes.append(size)
         left -= size
     return sizes
@@ -259,6 +271,8 @@ class BatchPool:
         self._lock = threading.Lock()
         #: Measured solve time per target (µs) by (recipe key, frame, collision-aware).
         self._cost: dict[tuple[str, str, bool], float] = {}
+        #: Pickled recipes by key (put in each batch's segment for workers that lack one).
+        self._pickled: dict[str, bytes] = {}
 
     def _pool(self) -> ProcessPoolExecutor:
         with self._lock:
@@ -323,8 +337,17 @@ class BatchPool:
         n = len(targets)
         if self.processes == 1 or n < MIN_PARALLEL:
             return solve_targets(robot, targets, task, cancel=cancel, record=record)
-        with shared_segment.create(BatchAnswers.nbytes(n, len(robot.joint_names))) as segment:
-            return self._solve_shared(robot, targets, task, segment, cancel, record)
+        recipe = RobotRecipe.of(robot)
+        pickled = self._pickled.get(recipe.key)
+        if pickled is None:
+            pickled = self._pickled[recipe.key] = pickle.dumps(recipe, pickle.HIGHEST_PROTOCOL)
+            while len(self._pickled) > _ROBOTS_MAX:
+                self._pickled.pop(next(iter(self._pickled)))
+        at = BatchAnswers.nbytes(n, len(robot.joint_names))
+        with shared_segment.create(at + len(pickled)) as segment:
+            segment.buf[at : at + len(pickled)] = pickled
+            rows = (segment.name, n, len(robot.joint_names), (at, len(pickled)), recipe.key)
+            return self._solve_shared(robot, targets, task, segment, rows, cancel, record)
 
     def _solve_shared(
         self,
@@ -332,6 +355,7 @@ class BatchPool:
         targets: Sequence[pin.SE3],
         task: BatchTask,
         segment: shared_memory.SharedMemory,
+        rows: tuple[str, int, int, tuple[int, int], str],
         cancel: threading.Event | None,
         record: Callable[[bool], None] | None,
     ) -> BatchAnswers:
@@ -342,22 +366,21 @@ class BatchPool:
         )
         for i, T in enumerate(targets):
             matrices[i] = T.homogeneous
-        self._run(robot, segment.name, answers, task, cancel, record)
+        self._run(robot, rows, answers, task, cancel, record)
         return answers.copy()
 
     def _run(
         self,
         robot: RobotModel,
-        segment: str,
+        rows: tuple[str, int, int, tuple[int, int], str],
         answers: BatchAnswers,
         task: BatchTask,
         cancel: threading.Event | None,
         record: Callable[[bool], None] | None,
     ) -> None:
-        """Hand the rows of ``answers`` (in ``segment``) out in chunks, wait for each in
-        order and collect the rows' notes and timings."""
-        n, dof = answers.q.shape
-        recipe = RobotRecipe.of(robot)
+        """Hand the rows of ``answers`` (in the segment of ``rows``) out in chunks, wait for
+        each in order and collect the rows' notes and timings."""
+        n = len(answers)
         key = self._cost_key(robot, task)
         sizes = chunk_sizes(n, self.processes, self.cost_us(robot, task), task.options.timeout_ms)
         executor = self._pool()
@@ -366,9 +389,7 @@ class BatchPool:
             start = 0
             for size in sizes:
                 try:
-                    fut = executor.submit(
-                        _worker_chunk, recipe, segment, n, dof, start, start + size, task
-                    )
+                    fut = executor.submit(_worker_chunk, (*rows, start, start + size), task)
                 except BrokenProcessPool:
                     raise
                 except RuntimeError:  # "cannot schedule new futures after shutdown"

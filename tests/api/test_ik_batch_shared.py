@@ -93,17 +93,23 @@ def test_two_processes_answer_as_one_field_by_field(
 def test_chunks_by_measured_cost() -> None:
     """Guided chunks: they cover the batch, never grow, and each is within the measured-work
     bounds (and the budget bound)."""
-    for n, cost, timeout in [(4000, 65.0, 5.0), (4000, 100.0, 5.0), (33, 100.0, 5.0),
-                             (500, 3000.0, 5.0), (200, 65.0, 200.0)]:  # fmt: skip
+    cases = [(4000, 65.0, 5.0), (4000, 100.0, 5.0), (33, 100.0, 5.0), (500, 3000.0, 5.0),
+             (200, 65.0, 200.0), (61, 65.0, 5.0), (4000, 90.0, 5.0)]  # fmt: skip
+    for n, cost, timeout in cases:
         sizes = ik_batch.chunk_sizes(n, 2, cost, timeout)
         assert sum(sizes) == n
-        assert all(a >= b for a, b in zip(sizes, sizes[1:], strict=False))
         most = min(ik_batch.CHUNK_MAX_MS * 1e3 / cost, ik_batch.CHUNK_BUDGET_MS / timeout)
         assert max(sizes) <= max(1, most)
-        least = min(most, ik_batch.CHUNK_MIN_MS * 1e3 / cost)
-        assert all(s >= least - 1 for s in sizes[:-1])
+        least = min(most, ik_batch.CHUNK_MIN_MS * 1e3 / cost, n / 2)
+        assert all(s >= least - 1 for s in sizes[:-1]) and sizes[-1] >= least / 2
+        assert len(sizes) >= 2  # every batch here is shared by the 2 processes
+        # never growing, but for the last chunk, which takes a crumb a smallest one would
+        # leave after it (less than half a smallest chunk)
+        assert all(a >= b for a, b in zip(sizes[:-1], sizes[1:-1], strict=False))
+        assert len(sizes) == 1 or sizes[-1] < sizes[-2] + least
     sizes = ik_batch.chunk_sizes(4000, 2, 65.0, 5.0)
-    assert sizes[0] == int(ik_batch.CHUNK_MAX_MS * 1e3 / 65.0) and sizes[-1] < sizes[0] // 4
+    most = min(int(ik_batch.CHUNK_MAX_MS * 1e3 / 65.0), int(ik_batch.CHUNK_BUDGET_MS / 5.0))
+    assert sizes[0] == most and sizes[-1] < sizes[0] // 4
 
 
 def test_an_error_while_collecting_unlinks_the_segment(pool, registry) -> None:
@@ -127,7 +133,7 @@ def test_a_worker_finds_a_withdrawn_batch_gone(registry) -> None:
     recipe = ik_batch.RobotRecipe.of(robot)
     with shared_segment.create(BatchAnswers.nbytes(4, 6)) as segment:
         name = segment.name
-    assert ik_batch._worker_chunk(recipe, name, 4, 6, 0, 4, task) is None
+    assert ik_batch._worker_chunk((name, 4, 6, (0, 0), recipe.key, 0, 4), task) is None
 
 
 def test_answers_on_a_buffer_are_shared_and_copied_out() -> None:
