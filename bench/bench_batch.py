@@ -228,8 +228,8 @@ def main() -> None:
         per_round = ", ".join(f"{s:.0f}" for s in speed)
         print(f"| {rid} | {p} | {per_round} | {max(speed):.0f} | {med:.0f} | {solved}/{n} "
               f"| {med / base[rid]:.2f}× | {cpu_med:.1f} |")  # fmt: skip
-    print("\nCPU bound of 2 processes on 2 idle cores (2 × CPU per target of 1 process / CPU "
-          "per target of the pool, server and workers; the machine's own scaling apart): "
+    print("\nCPU ratio, 2 × CPU per target of 1 process / CPU per target of the pool (server "
+          "and workers): the speed-up 2 otherwise idle cores would give with no other loss: "
           + ", ".join(f"{rid} {r:.2f}×" for rid, r in projected.items()))  # fmt: skip
     m = min(n, 2000)
     print(f"\nAnswers between a worker and the server, µs per target ({m} answers, medians of "
