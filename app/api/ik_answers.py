@@ -8,12 +8,12 @@ and m; errors in m and rad); these functions turn them into the JSON bodies of
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
 from app.kinematics import ik
+from app.kinematics.ik.batch import BatchAnswers
 from app.kinematics.ik.problem import IKOptions
 from app.kinematics.ik.search import IKSolution
 from app.kinematics.models import RobotModel
@@ -61,24 +61,42 @@ def ik_answer(robot: RobotModel, options: IKOptions, res: ik.IKResult) -> dict[s
     }
 
 
-def batch_entry(res: ik.IKResult) -> dict[str, Any]:
-    """One target's entry of a batch answer (``IKBatchResult``)."""
-    return {
-        "success": res.success,
-        "status": res.status,
-        "q": res.q.tolist(),
-        "position_error": res.position_error,
-        "orientation_error": res.orientation_error,
-        "iterations": res.iterations,
-        "restarts": res.restarts,
-        "solve_time_ms": res.solve_time_ms,
-        "reason": res.reason,
-        "detail": res.detail,
-    }
+def batch_entries(answers: BatchAnswers) -> list[dict[str, Any]]:
+    """Every target's entry of a batch answer (``IKBatchResult``), in target order, read
+    from the columns (each column turned into Python values at once)."""
+    notes = answers.notes
+    none = (None, None)
+    return [
+        {
+            "success": success,
+            "status": status,
+            "q": q,
+            "position_error": pe,
+            "orientation_error": oe,
+            "iterations": it,
+            "restarts": rs,
+            "solve_time_ms": ms,
+            "reason": notes.get(i, none)[0],
+            "detail": notes.get(i, none)[1],
+        }
+        for i, (success, status, q, pe, oe, it, rs, ms) in enumerate(
+            zip(
+                answers.success.tolist(),
+                answers.statuses(),
+                answers.q.tolist(),
+                answers.position_error.tolist(),
+                answers.orientation_error.tolist(),
+                answers.iterations.tolist(),
+                answers.restarts.tolist(),
+                answers.solve_time_ms.tolist(),
+                strict=True,
+            )
+        )
+    ]
 
 
 def batch_answer(
-    robot: RobotModel, options: IKOptions, results: Sequence[ik.IKResult], total_time_ms: float
+    robot: RobotModel, options: IKOptions, answers: BatchAnswers, total_time_ms: float
 ) -> dict[str, Any]:
     """The body of a batch IK answer (``IKBatchResponse``), results in target order."""
     return {
@@ -86,8 +104,8 @@ def batch_answer(
         "frame": options.frame,
         "mode": options.mode,
         "joint_names": robot.joint_names,
-        "solved": sum(r.success for r in results),
-        "results": [batch_entry(r) for r in results],
+        "solved": answers.solved,
+        "results": batch_entries(answers),
         "total_time_ms": total_time_ms,
         "solver_version": ik.SOLVER_VERSION,
     }

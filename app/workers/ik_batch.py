@@ -10,18 +10,37 @@ from (URDF text, package directories, SRDF, end effector; cached per robot id an
 of those, so a replaced robot is rebuilt) and solve chunks of consecutive targets; the
 results are assembled in target order.
 
-Determinism: a worker solves its chunk with :func:`~app.kinematics.ik.batch.solve_targets`,
+Determinism: a worker solves its chunk with :func:`~app.kinematics.ik.batch.solve_into`,
 target ``i`` with the generator of its index in the batch, so an answer never depends on the
 number of processes or on the chunking (:mod:`app.kinematics.ik.batch`). Collision-aware
 batches run in the pool too: obstacles are plain data, and each worker builds (and caches,
 per robot) its own collision model.
 
+Shared arrays, not pickled answers: the caller puts the batch's target matrices, room for
+its answer columns (:class:`~app.kinematics.ik.batch.BatchAnswers`) and the robot's pickled
+recipe in one shared memory segment (:mod:`app.workers.shared_segment`, unlinked when the
+batch ends, however it ends); a chunk is a range of rows plus the task, and a worker writes
+its answers in place and returns only the rows' failure notes and its CPU time. Per target
+this costs ~1.2 µs in the worker and ~1 µs in the caller (entries of the answer included),
+where building, pickling and unpickling one answer object cost ~9–12 µs in the worker and
+~7 µs in the caller (docs/benchmarks.md); the recipe (the robot's URDF text, ~15–20 kB) is
+read by a worker only when it has not built that robot yet, instead of travelling with
+every chunk.
+
+Chunks by measured cost: the pool keeps each robot's (and frame's) solve time per target,
+measured by the workers' CPU clocks (a moving average: the work's cost, whatever else the
+machine runs), and cuts a batch into chunks of decreasing size (guided scheduling: each
+about a ``2 × processes``-th of what is left, of :data:`CHUNK_MIN_MS` to
+:data:`CHUNK_MAX_MS` of measured work), so that the chunks cost little to hand out and the
+workers run out of work together.
+
 Cancellation: the caller's ``cancel`` event is checked while waiting for each chunk; once
 set, chunks not yet started are withdrawn and :class:`~app.kinematics.errors.Cancelled` is
-raised (a chunk already running in a worker finishes it: at most :data:`CHUNK_BUDGET_MS` of
-budget). A worker that dies (killed, out of memory) breaks the pool: the batch fails with
-:class:`~app.kinematics.errors.UnavailableError` (503) and the next batch gets a fresh
-pool. Workers end with the process that started them
+raised (a chunk already running in a worker finishes it, writing to memory only that
+worker still maps: at most :data:`CHUNK_BUDGET_MS` of budget, usually
+:data:`CHUNK_MAX_MS`). A worker that dies (killed, out of memory) breaks the pool: the batch
+fails with :class:`~app.kinematics.errors.UnavailableError` (503) and the next batch gets a
+fresh pool. Workers end with the process that started them
 (:func:`app.workers.procwatch.watch_parent`).
 
 """
@@ -32,32 +51,42 @@ import hashlib
 import math
 import multiprocessing
 import multiprocessing.forkserver
+import pickle
 import queue
 import threading
+import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, CancelledError, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
+from multiprocessing import shared_memory
 
-import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, UnavailableError
-from app.kinematics.ik import IKResult
-from app.kinematics.ik.batch import BatchTask, solve_targets
+from app.kinematics.ik.batch import BatchAnswers, BatchTask, solve_into, solve_targets
 from app.kinematics.ik.warmup import warm_up
 from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
+from app.workers import shared_segment
 from app.workers.procwatch import kill_self, watch_parent
 
-#: Most targets in one chunk (the unit of work of a worker process). Each chunk costs the
-#: caller a round trip through the pool and its answers' unpickling; at 64 the caller's share
-#: was ~20 % of a core, at 256 about half that (Panda, 4 000 targets).
-CHUNK_MAX = 256
+#: Most targets in one chunk (the unit of work of a worker process).
+CHUNK_MAX = 1024
 #: A chunk's total budget, targets × ``timeout_ms``, is kept under this (ms) when possible,
 #: so that a cancelled batch frees its workers soon: a worst case, every target spending its
-#: whole budget; a solved target takes ~0.1 ms, so a chunk usually ends within ~30 ms.
+#: whole budget.
 CHUNK_BUDGET_MS = 2000.0
+#: Measured work (ms) of the largest chunk: what a cancelled batch's running chunk usually
+#: still takes, and the grain of the first chunks.
+CHUNK_MAX_MS = 50.0
+#: Measured work (ms) of the smallest chunk: the last chunks, which even out the workers'
+#: ends (a chunk costs the caller ~0.1–0.4 ms of CPU: submission, its round trip, waiting).
+CHUNK_MIN_MS = 4.0
+#: Solve time per target (µs) assumed for a robot and frame not measured yet.
+DEFAULT_COST_US = 100.0
+#: Weight of a chunk's measurement in the moving average of the cost per target.
+COST_WEIGHT = 0.3
 #: Batches with fewer targets than this are solved in the calling thread (no process hop).
 MIN_PARALLEL = 32
 #: How often (s) the caller's cancel event is checked while waiting for a chunk.
@@ -112,6 +141,9 @@ class RobotRecipe:
         )
 
 
+#: Row → (reason, detail) of a batch's failures.
+Notes = dict[int, tuple[str | None, str | None]]
+
 #: The model's lazy-cache key of its batch recipe (:meth:`RobotRecipe.of`).
 RECIPE_KEY: LazyKey[RobotRecipe] = LazyKey("ik_batch_recipe", RobotRecipe)
 
@@ -128,29 +160,66 @@ def _worker_init() -> None:
     warm_up()
 
 
-def _worker_robot(recipe: RobotRecipe) -> RobotModel:
-    robot = _ROBOTS.get(recipe.key)
+def _worker_robot(key: str, buffer: memoryview, recipe_at: int, recipe_len: int) -> RobotModel:
+    """The robot of recipe ``key``: cached, or built from the recipe pickled at
+    ``recipe_at`` in the batch's segment (sent once per batch, not once per chunk)."""
+    robot = _ROBOTS.get(key)
     if robot is None:
+        recipe = pickle.loads(buffer[recipe_at : recipe_at + recipe_len])
         if len(_ROBOTS) >= _ROBOTS_MAX:
             _ROBOTS.pop(next(iter(_ROBOTS)))
-        robot = _ROBOTS[recipe.key] = recipe.build()
+        robot = _ROBOTS[key] = recipe.build()
     return robot
 
 
-def _worker_chunk(
-    recipe: RobotRecipe, matrices: np.ndarray, start: int, task: BatchTask
-) -> list[IKResult]:
-    """Targets ``start`` … of a batch (homogeneous matrices, root frame) in a worker."""
-    robot = _worker_robot(recipe)
-    targets = [pin.SE3(np.ascontiguousarray(T)) for T in matrices]
-    return solve_targets(robot, targets, task, start=start)
+#: What a chunk's rows need besides the task: segment name, targets in the batch, joints,
+#: (offset, length) of the pickled recipe in the segment, recipe key, first and end row.
+Rows = tuple[str, int, int, tuple[int, int], str, int, int]
 
 
-def chunk_size(n: int, processes: int, timeout_ms: float) -> int:
-    """Targets per chunk: about four chunks per process (load balance), at most
-    :data:`CHUNK_MAX`, and a chunk's budget within :data:`CHUNK_BUDGET_MS` where possible."""
-    size = min(CHUNK_MAX, math.ceil(n / (4 * processes)))
-    return max(1, min(size, math.floor(CHUNK_BUDGET_MS / timeout_ms)))
+def _worker_chunk(rows: Rows, task: BatchTask) -> tuple[Notes, float] | None:
+    """Targets ``start`` … ``stop − 1`` of a batch of ``n`` in the shared ``segment``
+    (:meth:`BatchAnswers.on_buffer`), solved in a worker, their answers written in place.
+    Returns the rows' failure notes and the CPU seconds spent on them (this process's
+    clock: the measured cost is the work's, whatever else the machine runs); None when the
+    segment is gone (the batch was withdrawn before this chunk started)."""
+    segment = rows[0]
+    try:
+        with shared_segment.attach(segment) as buffer:
+            return _solve_rows(buffer, rows, task)
+    except FileNotFoundError:
+        return None
+
+
+def _solve_rows(buffer: memoryview, rows: Rows, task: BatchTask) -> tuple[Notes, float]:
+    """:func:`_worker_chunk` on the mapped segment (no view on it outlives this call)."""
+    t0 = time.process_time()
+    _, n, dof, (recipe_at, recipe_len), key, start, stop = rows
+    robot = _worker_robot(key, buffer, recipe_at, recipe_len)
+    matrices, answers = BatchAnswers.on_buffer(buffer, n, dof)
+    targets = [pin.SE3(T) for T in matrices[start:stop]]
+    solve_into(robot, targets, task, answers, start=start)
+    return answers.notes, time.process_time() - t0
+
+
+def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
+    """Sizes of consecutive chunks of ``n`` targets, decreasing (guided scheduling): each
+    about ``1 / (2 × processes)`` of the targets left, between :data:`CHUNK_MIN_MS` and
+    :data:`CHUNK_MAX_MS` of work at ``cost_us`` per target, at most :data:`CHUNK_MAX`
+    targets and a budget within :data:`CHUNK_BUDGET_MS` where possible."""
+    most = min(CHUNK_MAX, math.floor(CHUNK_MAX_MS * 1e3 / cost_us))
+    most = max(1, min(most, math.floor(CHUNK_BUDGET_MS / timeout_ms)))
+    least = min(math.ceil(CHUNK_MIN_MS * 1e3 / cost_us), math.ceil(n / processes))
+    least = max(1, min(most, least))  # a small batch is still shared by the processes
+    sizes = []
+    left = n
+    while left > 0:
+        size = min(left, most, max(least, math.ceil(left / (2 * processes))))
+        if 2 * (left - size) < least and left <= most:  # no crumb after the last chunk
+            size = left
+        sizes.append(size)
+        left -= size
+    return sizes
 
 
 _STARTER: queue.SimpleQueue[Future[None]] | None = None
@@ -200,6 +269,10 @@ class BatchPool:
         self.processes = processes
         self._executor: ProcessPoolExecutor | None = None
         self._lock = threading.Lock()
+        #: Measured solve time per target (µs) by (recipe key, frame, collision-aware).
+        self._cost: dict[tuple[str, str, bool], float] = {}
+        #: Pickled recipes by key (put in each batch's segment for workers that lack one).
+        self._pickled: dict[str, bytes] = {}
 
     def _pool(self) -> ProcessPoolExecutor:
         with self._lock:
@@ -227,6 +300,21 @@ class BatchPool:
         if executor is not None:
             executor.shutdown(wait=True, cancel_futures=True)
 
+    def cost_us(self, robot: RobotModel, task: BatchTask) -> float:
+        """The measured solve time per target (µs) of ``task``'s kind on ``robot`` (a moving
+        average over the workers' chunks; :data:`DEFAULT_COST_US` before any)."""
+        return self._cost.get(self._cost_key(robot, task), DEFAULT_COST_US)
+
+    @staticmethod
+    def _cost_key(robot: RobotModel, task: BatchTask) -> tuple[str, str, bool]:
+        return (RobotRecipe.of(robot).key, task.options.frame, task.collisions is not None)
+
+    def _measured(self, key: tuple[str, str, bool], targets: int, seconds: float) -> None:
+        """Fold one chunk's solve time into the cost per target of ``key``."""
+        us = max(seconds * 1e6 / targets, 1.0)
+        old = self._cost.get(key)
+        self._cost[key] = us if old is None else old + COST_WEIGHT * (us - old)
+
     def solve(
         self,
         robot: RobotModel,
@@ -235,7 +323,7 @@ class BatchPool:
         *,
         cancel: threading.Event | None = None,
         record: Callable[[bool], None] | None = None,
-    ) -> list[IKResult]:
+    ) -> BatchAnswers:
         """Every target solved from ``task.seed``, in order (as :func:`solve_targets`): in the
         workers when there are several and at least :data:`MIN_PARALLEL` targets, else here.
 
@@ -250,29 +338,80 @@ class BatchPool:
         if self.processes == 1 or n < MIN_PARALLEL:
             return solve_targets(robot, targets, task, cancel=cancel, record=record)
         recipe = RobotRecipe.of(robot)
-        size = chunk_size(n, self.processes, task.options.timeout_ms)
-        matrices = np.array([T.homogeneous for T in targets])
+        pickled = self._pickled.get(recipe.key)
+        if pickled is None:
+            pickled = self._pickled[recipe.key] = pickle.dumps(recipe, pickle.HIGHEST_PROTOCOL)
+            while len(self._pickled) > _ROBOTS_MAX:
+                self._pickled.pop(next(iter(self._pickled)))
+        at = BatchAnswers.nbytes(n, len(robot.joint_names))
+        with shared_segment.create(at + len(pickled)) as segment:
+            segment.buf[at : at + len(pickled)] = pickled
+            rows = (segment.name, n, len(robot.joint_names), (at, len(pickled)), recipe.key)
+            return self._solve_shared(robot, targets, task, segment, rows, cancel, record)
+
+    def _solve_shared(
+        self,
+        robot: RobotModel,
+        targets: Sequence[pin.SE3],
+        task: BatchTask,
+        segment: shared_memory.SharedMemory,
+        rows: tuple[str, int, int, tuple[int, int], str],
+        cancel: threading.Event | None,
+        record: Callable[[bool], None] | None,
+    ) -> BatchAnswers:
+        """The batch through ``segment``: targets written, chunks run, answers copied out
+        (no view on the segment outlives this call)."""
+        matrices, answers = BatchAnswers.on_buffer(
+            segment.buf, len(targets), len(robot.joint_names)
+        )
+        for i, T in enumerate(targets):
+            matrices[i] = T.homogeneous
+        self._run(robot, rows, answers, task, cancel, record)
+        return answers.copy()
+
+    def _run(
+        self,
+        robot: RobotModel,
+        rows: tuple[str, int, int, tuple[int, int], str],
+        answers: BatchAnswers,
+        task: BatchTask,
+        cancel: threading.Event | None,
+        record: Callable[[bool], None] | None,
+    ) -> None:
+        """Hand the rows of ``answers`` (in the segment of ``rows``) out in chunks, wait for
+        each in order and collect the rows' notes and timings."""
+        n = len(answers)
+        key = self._cost_key(robot, task)
+        sizes = chunk_sizes(n, self.processes, self.cost_us(robot, task), task.options.timeout_ms)
         executor = self._pool()
-        futures: list[Future] = []
+        futures: list[tuple[int, int, Future]] = []
         try:
-            for a in range(0, n, size):
-                futures.append(
-                    executor.submit(_worker_chunk, recipe, matrices[a : a + size], a, task)
-                )
-            out: list[IKResult] = []
-            for fut in futures:
+            start = 0
+            for size in sizes:
+                try:
+                    fut = executor.submit(_worker_chunk, (*rows, start, start + size), task)
+                except BrokenProcessPool:
+                    raise
+                except RuntimeError:  # "cannot schedule new futures after shutdown"
+                    raise CancelledError() from None
+                futures.append((start, start + size, fut))
+                start += size
+            for start, stop, fut in futures:
                 while True:
                     if cancel is not None and cancel.is_set():
                         raise Cancelled()
                     if fut.done():
                         break
                     wait([fut], timeout=POLL_S, return_when=FIRST_COMPLETED)
-                part = fut.result()
+                done = fut.result()
+                if done is None:  # the segment is there until this returns: never seen
+                    raise UnavailableError("a batch IK worker lost the batch", "targets")
+                notes, seconds = done
+                answers.notes.update(notes)
+                self._measured(key, stop - start, seconds)
                 if record is not None:
-                    for res in part:
-                        record(res.success)
-                out.extend(part)
-            return out
+                    for success in answers.success[start:stop].tolist():
+                        record(success)
         except BrokenProcessPool:
             self._discard(executor)
             raise UnavailableError(
@@ -284,5 +423,5 @@ class BatchPool:
                 "the batch IK workers were stopped during the batch; send it again", "targets"
             ) from None
         finally:
-            for fut in futures:
+            for _, _, fut in futures:
                 fut.cancel()

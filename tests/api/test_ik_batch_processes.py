@@ -28,6 +28,7 @@ from app.kinematics.obstacles import parse_obstacles
 from app.main import create_app
 from app.operations.settings import Settings
 from app.workers import ik_batch
+from tests.api.ik_batch_segments import leftover_segments
 from tests.helpers import descendants, parse_metrics, problem, send_and_hang_up, serve
 
 RANDOM_SEED = 1234
@@ -167,7 +168,9 @@ def test_cancel_stops_between_chunks(registry) -> None:
             pool.solve(robot, targets, task, cancel=cancel, record=record)
     finally:
         pool.shutdown()
-    assert len(seen) == ik_batch.chunk_size(40, 2, 200.0) < 40
+    first = ik_batch.chunk_sizes(40, 2, ik_batch.DEFAULT_COST_US, 200.0)[0]
+    assert len(seen) == first < 40
+    assert not leftover_segments()  # the batch's shared segment was unlinked
 
 
 def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
@@ -191,6 +194,7 @@ def test_a_killed_worker_gives_503_then_a_fresh_pool(pooled, registry) -> None:
     thread.join(timeout=120)
     assert not thread.is_alive()
     problem(answer["r"], 503, "targets")
+    assert not leftover_segments()
     good = _targets(robot, "panda_link8", 34, seed=4)
     r = pooled.post("/robots/panda/ik/batch", json=_body(robot, "panda_link8", good))
     assert r.status_code == 200, r.text

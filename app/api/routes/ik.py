@@ -25,7 +25,7 @@ from app.api.schemas.ik import IKBatchRequest, IKBatchResponse, IKRequest, IKRes
 from app.api.state import services
 from app.kinematics import ik
 from app.kinematics.groups import group
-from app.kinematics.ik.batch import BatchTask, collision_accept
+from app.kinematics.ik.batch import BatchAnswers, BatchTask, collision_accept
 from app.kinematics.ik.problem import group_seed
 from app.kinematics.models import RobotModel
 from app.operations.metrics import record_ik
@@ -49,16 +49,16 @@ def _solve_batch(
     t0 = time.perf_counter()
     options = task.options
     if chain:
-        results = []
+        results = BatchAnswers.allocate(len(targets), len(robot.joint_names))
         current = task.seed
         accept = collision_accept(robot, task.collisions)
         rng = None if task.random_seed is None else np.random.default_rng(task.random_seed)
-        for T in targets:
+        for i, T in enumerate(targets):
             res = ik.solve(robot, T, options, seed=current, accept=accept, rng=rng, cancel=cancel)
             record_ik(res.success)
             if res.success:
                 current = res.q
-            results.append(res)
+            results.put(i, res)
     else:
         results = pool.solve(robot, targets, task, cancel=cancel, record=record_ik)
     return batch_answer(robot, options, results, (time.perf_counter() - t0) * 1e3)
