@@ -113,25 +113,25 @@ def write_openapi(path: Path) -> None:
 
 
 def warm_up(require_cache: bool) -> int:
-    """Compile (or load) the IK kernels; one JSON line on stdout saying which and where.
+    """Compile (or load) the core's kernels; one JSON line on stdout saying which and where.
     1 if ``require_cache`` and any kernel had to be compiled (the cache missed)."""
     import os
     import time
 
-    from app.kinematics.ik import warmup
+    from app.kinematics import kernels
 
     start = time.perf_counter()
-    warmup.warm_up()
-    stats = warmup.kernel_cache_stats()
+    kernels.warm_up()
+    stats = kernels.kernel_cache_stats()
     report = {
         **stats,
         "seconds": round(time.perf_counter() - start, 3),
-        "module": warmup.__file__,
+        "module": kernels.__file__,
         "numba_cache_dir": os.environ.get("NUMBA_CACHE_DIR"),
     }
     print(json.dumps(report))
     if require_cache and (stats["compiled"] or not stats["loaded"]):
-        print("denavit: the IK kernels were not all loaded from Numba's cache", file=sys.stderr)
+        print("denavit: the kernels were not all loaded from Numba's cache", file=sys.stderr)
         return 1
     return 0
 

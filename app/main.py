@@ -31,7 +31,7 @@ from starlette.middleware.cors import CORSMiddleware
 from app.api import errors, static_files
 from app.api.routes import ROUTERS, docs_pages, metrics, viewer
 from app.api.state import open_services
-from app.kinematics.ik.warmup import warm_up as warm_up_ik
+from app.kinematics.kernels import warm_up as warm_up_kernels
 from app.kinematics.meshes import MeshLimits
 from app.kinematics.xmldoc import XmlLimits
 from app.middleware import openapi
@@ -94,8 +94,8 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
             "stale_temporaries_removed": removed,
         },
     )
-    # Compile the IK kernels in the background: the first IK request does not wait for it.
-    threading.Thread(target=warm_up_ik, name="ik-warm-up", daemon=True).start()
+    # Compile the kernels in the background: the first IK request does not wait for it.
+    threading.Thread(target=warm_up_kernels, name="kernel-warm-up", daemon=True).start()
     procwatch.exit_with_supervisor(settings.graceful_timeout_s + 5)  # no worker outlives it
     services = app.state.services = open_services(settings)
     try:

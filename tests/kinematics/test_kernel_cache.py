@@ -1,4 +1,4 @@
-"""``ik.warmup.kernel_cache_stats`` counts every compiled kernel of the core.
+"""``kernels.kernel_cache_stats`` counts every compiled kernel of the core.
 
 The container build runs ``python -m app warm-up --require-cache`` and trusts these counts to
 prove that every kernel loads from the image's Numba cache; a kernel module the count
@@ -14,7 +14,7 @@ import pytest
 
 import app.kinematics
 from app.kinematics import jit
-from app.kinematics.ik.warmup import kernel_cache_stats, warm_up
+from app.kinematics.kernels import kernel_cache_stats, warm_up
 
 pytestmark = pytest.mark.skipif(not jit.available(), reason="Numba not installed")
 
