@@ -238,6 +238,10 @@ class _Session:
                     )
                     return
                 inbox.put_nowait(message)
+                # Let the answering task, just woken, run before this one reads again: the
+                # answer is then computed and sent before the read is re-armed (Starlette's
+                # and uvicorn's receive, ~10 µs with the caches cold), not after.
+                await asyncio.sleep(0)
         except WebSocketDisconnect as exc:
             inbox.put_nowait(exc)
         except Exception:  # a bug: logged with its traceback, the socket closed with 1011
