@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import math
+import struct
 from dataclasses import dataclass
 from typing import Any
 
@@ -25,6 +26,7 @@ from app.api.schemas.common import Schema
 from app.api.schemas.fk import FKRequest
 from app.api.schemas.ik import IKRequest
 from app.api.schemas.jacobian import JacobianRequest
+from app.kinematics.ik import IKResult
 from app.kinematics.text import printable
 
 #: Each op: its HTTP request model (the message's body is validated by it).
@@ -139,15 +141,15 @@ def parse_binary(data: bytes, robot_id: str, stream_path: str) -> Message:
             f"a binary frame is float64 values [op, id, ...]: got {len(data)} bytes",
             stream_path,
         )
-    values = np.frombuffer(data, dtype=LITTLE_F8)
-    code, msg_id = float(values[0]), float(values[1])
+    values = struct.unpack(f"<{len(data) >> 3}d", data)  # Python floats, bit for bit
+    code, msg_id = values[0], values[1]
     if not math.isfinite(msg_id):  # NaN or ±inf: not echoable (JSON has no such number)
         raise _invalid("id", f"must be a finite number: got {msg_id}", stream_path)
     op = _OP_OF_CODE.get(code)
     if op is None:
         codes = ", ".join(f"{c} ({o})" for o, c in OP_CODES.items())
         raise _invalid("op", f"unknown op code {code:g}: {codes}", stream_path, msg_id)
-    payload = values[2:].tolist()
+    payload = list(values[2:])
     if op == "ik":
         if len(payload) != POSE_FLOATS:
             raise _invalid(
@@ -176,3 +178,20 @@ def binary_answer(op: str, msg_id: float, out: dict[str, Any]) -> bytes:
     else:
         body = [float(out["success"]), *out["q"], out["position_error"], out["orientation_error"]]
     return np.array(head + body, dtype=LITTLE_F8).tobytes()
+
+
+def binary_ik_answer(msg_id: float, res: IKResult) -> bytes:
+    """A binary ik frame's answer straight from the solve's result ``res``: the bytes of
+    ``binary_answer("ik", msg_id, out)`` for the JSON answer ``out`` of ``res``,
+    ``[3, id, success (1 or 0), q (n values), position_error (m), orientation_error (rad)]``
+    little-endian float64, without building that answer."""
+    q = res.q.tolist()
+    return struct.pack(
+        f"<{len(q) + 5}d",
+        OP_CODES["ik"],
+        msg_id,
+        float(res.success),
+        *q,
+        res.position_error,
+        res.orientation_error,
+    )
