@@ -155,13 +155,17 @@ def test_answers_on_a_buffer_are_shared_and_copied_out() -> None:
 
 
 def test_shutdown_during_a_batch_unlinks_the_segment(pool, registry, monkeypatch) -> None:
-    """The pool stopped (application shutdown) while a batch of slow targets runs, in 32
+    """The pool stopped (application shutdown) while a batch of slow targets runs, in 128
     chunks of 2 (at most 5 start: 2 running, 3 queued; the rest are withdrawn): the batch
     fails with a 503 error naming ``targets`` and its segment is unlinked; the pool serves
     the next batch with fresh workers."""
     monkeypatch.setattr(ik_batch, "chunk_sizes", lambda n, *_: [2] * (n // 2))
     robot = registry.get("panda")
-    slow = [pin.SE3(np.eye(3), np.array([0.0, 1.0, 0.333]))] * 64  # beyond reach, in the bound
+    # Beyond reach but inside the reach bound: each target searches its whole 50 ms budget
+    # (1.0 m is outside the bound: classified unreachable in ~10 ms, and a batch of those
+    # could end before a loaded machine's test thread sees its chunks queued). 256 of them
+    # are ≥ 6 s of work on two workers; the shutdown waits for the two running chunks only.
+    slow = [pin.SE3(np.eye(3), np.array([0.0, 0.95, 0.333]))] * 256
     options = IKOptions(frame="panda_link8", mode="position", timeout_ms=50.0)
     task = BatchTask(robot.mid_range(), options)
     failed: list[BaseException] = []
