@@ -29,11 +29,11 @@ KERNEL_MODULES = (
 
 
 def warm_up() -> None:
-    """Compile (or load) the solver's kernels, then the paths' (idempotent; the solver's
-    part is thread-safe and says when it is done: :func:`app.kinematics.ik.warmup.warmed`)."""
+    """Compile (or load) the solver's kernels, then the paths' (registered by
+    :mod:`~app.kinematics.paths.point_kernel` with the solver's warm-up, so that a query's
+    chain waits for them too): idempotent, thread-safe, done when
+    :func:`app.kinematics.ik.warmup.warmed`."""
     warmup.warm_up()
-    if available():
-        point_kernel.warm_up()  # the branch flags and a segment's pose with it
 
 
 def kernel_cache_stats() -> dict[str, int]:

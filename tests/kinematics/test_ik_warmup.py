@@ -47,3 +47,30 @@ def test_a_second_caller_waits_until_every_kernel_is_compiled(monkeypatch) -> No
     other.join(timeout=60)
     assert seen == [["attempt", "search", "closed forms"]]
     assert warmup.warmed()
+
+
+def test_registered_callers_compile_before_the_solver_is_warmed(monkeypatch) -> None:
+    """A kernel module that calls the solver's kernels (the paths' compiled point) registers
+    its warm-up with the solver's: a chain is prepared only once it is compiled too, so no
+    query's budget competes with its compiler (a fresh process once answered a 1 s query
+    ``timeout`` after 0 iterations while the paths' point compiled beside it)."""
+    from app.kinematics import kernels  # imports every kernel module, as the service does
+    from app.kinematics.paths import point_kernel
+
+    assert kernels.KERNEL_MODULES and point_kernel.warm_up in warmup._CALLERS
+    done: list[str] = []
+    monkeypatch.setattr(warmup, "_warmed", False)
+    monkeypatch.setattr(warmup, "_CALLERS", [])
+    for name in ("attempt", "search", "closed forms", "annotation"):
+        module = {"attempt": kernel, "search": search_kernel, "closed forms": analytic_ik}
+        target = module.get(name, warmup.annotate)
+        monkeypatch.setattr(target, "warm_up", lambda name=name: done.append(name))
+    warmup.register(lambda: done.append("paths"))
+    assert not warmup.warmed()
+    warmup.warm_up()
+    assert done == ["attempt", "search", "closed forms", "annotation", "paths"]
+    assert warmup.warmed()
+    warmup.register(lambda: done.append("later"))  # registered after: due at the next one
+    assert not warmup.warmed()
+    warmup.warm_up()
+    assert done[-1] == "later" and warmup.warmed()

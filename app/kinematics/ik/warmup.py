@@ -12,6 +12,7 @@ counts: :mod:`app.kinematics.kernels`.
 from __future__ import annotations
 
 import threading
+from collections.abc import Callable
 
 from app.kinematics import analytic_ik
 from app.kinematics.ik import annotate, kernel, search_kernel
@@ -19,6 +20,21 @@ from app.kinematics.jit import available
 
 _LOCK = threading.Lock()
 _warmed = False
+#: Warm-ups of compiled callers of the solver's kernels elsewhere in the core (:func:`register`).
+_CALLERS: list[Callable[[], None]] = []
+
+
+def register(warm: Callable[[], None]) -> None:
+    """Run ``warm`` (the warm-up of a kernel module elsewhere in the core that calls the
+    solver's kernels, e.g. the paths' compiled point) in :func:`warm_up`, under its lock
+    after the solver's kernels: a query's chain is prepared only once it is compiled too,
+    so no query's time budget competes with its compiler for the interpreter. Registered
+    after a warm-up, it runs at the next one (which :func:`warmed` then awaits)."""
+    global _warmed
+    with _LOCK:
+        if warm not in _CALLERS:
+            _CALLERS.append(warm)
+            _warmed = False
 
 
 def warmed() -> bool:
@@ -28,7 +44,8 @@ def warmed() -> bool:
 
 def warm_up() -> None:
     """Compile (or load from Numba's cache) every compiled part of the solver: the DLS
-    attempt, the whole search, the UR closed form. Idempotent and thread-safe: a caller that
+    attempt, the whole search, the UR closed form, the answer's annotation, then the
+    registered callers' (:func:`register`). Idempotent and thread-safe: a caller that
     comes while another compiles waits until all kernels are ready (a few seconds the first
     time on a machine, well under one from the cache)."""
     global _warmed
@@ -41,4 +58,6 @@ def warm_up() -> None:
         search_kernel.warm_up()
         analytic_ik.warm_up()
         annotate.warm_up()
+        for warm in _CALLERS:
+            warm()
         _warmed = True  # only now: every kernel is ready

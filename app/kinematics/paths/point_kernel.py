@@ -40,7 +40,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from app.kinematics.ik import branch_kernel, kernel
+from app.kinematics.ik import branch_kernel, kernel, warmup
 from app.kinematics.ik.boundary import ChainConstants, StepParameters
 from app.kinematics.jit import jit
 from app.kinematics.paths.pose_kernel import piece_pose
@@ -313,3 +313,7 @@ def warm_up() -> None:
     checks(q.copy(), q, pc, eye, z3, NO_LABELS, np.zeros(2))
     label_code(q, pc)
     pose_residuals(np.zeros(1), pc.chain, eye, z3, np.zeros(2))
+
+
+# Compiled with the solver's kernels, before any query's budget starts (ik.warmup.register).
+warmup.register(warm_up)
