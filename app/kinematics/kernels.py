@@ -12,7 +12,7 @@ every kernel loads from the image's cache.
 from __future__ import annotations
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import annotate, branch_kernel, kernel, search_kernel, warmup
+from app.kinematics.ik import annotate, branch_kernel, joint_frames, kernel, search_kernel, warmup
 from app.kinematics.jit import available
 from app.kinematics.paths import point_kernel, pose_kernel
 
@@ -22,6 +22,7 @@ KERNEL_MODULES = (
     search_kernel,
     annotate,
     branch_kernel,
+    joint_frames,
     analytic_ik.ur,
     point_kernel,
     pose_kernel,

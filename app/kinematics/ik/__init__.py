@@ -14,6 +14,8 @@ The package, one concept per module:
   (Numba), and the named tuples they take;
 - :mod:`.compiled`: the driver of the compiled search, full pose only;
 - :mod:`.annotate`: an answer's branch label and manipulability in compiled code;
+- :mod:`.joint_frames`: the chain's joint frames in compiled code (axes, origins, wrist
+  point), for the annotation and the paths' compiled point;
 - :mod:`.warmup`: compiling every kernel once per process;
 - here: :func:`solve`, which ties them together.
 

@@ -31,9 +31,8 @@ import math
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-import pinocchio as pin
 
-from app.kinematics.ik import branch_kernel
+from app.kinematics.ik import branch_kernel, joint_frames
 from app.kinematics.jit import direct, jit
 
 if TYPE_CHECKING:
@@ -126,37 +125,10 @@ def annotation(  # pragma: no cover
     k = qa.shape[0]
     z = np.empty((k, 3))
     o = np.empty((k, 3))
-    R = np.eye(3)
-    p = np.zeros(3)
-    tmp = np.empty((3, 3))
+    R = np.empty((3, 3))
+    p = np.empty(3)
     w = np.zeros(3)
-    for s in range(k):
-        for i in range(3):
-            p[i] += R[i, 0] * t[s, 0] + R[i, 1] * t[s, 1] + R[i, 2] * t[s, 2]
-        for i in range(3):
-            for j in range(3):
-                tmp[i, j] = R[i, 0] * C[s, 0, j] + R[i, 1] * C[s, 1, j] + R[i, 2] * C[s, 2, j]
-        for i in range(3):
-            for j in range(3):
-                R[i, j] = tmp[i, j]
-            z[s, i] = R[i, 2]
-            o[s, i] = p[i]
-        if prism[s]:
-            for i in range(3):
-                p[i] += qa[s] * R[i, 2]
-        else:
-            c = math.cos(qa[s])
-            sn = math.sin(qa[s])
-            for i in range(3):
-                x = R[i, 0]
-                y = R[i, 1]
-                R[i, 0] = c * x + sn * y
-                R[i, 1] = c * y - sn * x
-        if s == 4:  # the wrist point, fixed in link 5
-            for i in range(3):
-                w[i] = p[i] + R[i, 0] * wrist[0] + R[i, 1] * wrist[1] + R[i, 2] * wrist[2]
-    for i in range(3):
-        p[i] += R[i, 0] * last_t[0] + R[i, 1] * last_t[1] + R[i, 2] * last_t[2]
+    joint_frames.frames(qa, C, t, prism, last_C, last_t, R, p, z, o, w, wrist)
     J = np.empty((6, k))
     for s in range(k):
         zx, zy, zz = z[s, 0], z[s, 1], z[s, 2]
@@ -186,14 +158,7 @@ def annotation_constants(robot: RobotModel, ch: IKChain) -> AnnotationConstants 
     if form is None:
         return _constants(cc, False, 0, False, False, wrist)
     kind, elbow, tip_axis4 = branch_kernel.form_arrays(form)
-    if form.wrist is not None:
-        # the kernel's frame of joint 5 and Pinocchio's share the link: map the wrist point
-        # through the world at q = 0 (any configuration would do)
-        model, data = robot.model, robot.model.createData()
-        pin.forwardKinematics(model, data, robot.to_pin(np.zeros(robot.n)))
-        world = data.oMi[form.pin_ids[4]].act(np.asarray(form.wrist, dtype=float))
-        R, p = _frame_after(cc, np.zeros(ch.k), 4)
-        wrist = R.T @ (world - p)
+    wrist = joint_frames.wrist_in_kernel_frame(robot, ch)
     return _constants(cc, True, int(kind), bool(elbow), bool(tip_axis4), wrist)
 
 
@@ -202,21 +167,6 @@ def _constants(cc, labelled: bool, kind: int, elbow: bool, tip_axis4: bool, wris
     wrist = np.ascontiguousarray(wrist, dtype=np.float64)
     tail = (cc.C, cc.t, cc.prism, cc.last_C, cc.last_t, labelled, kind, elbow, tip_axis4, wrist)
     return AnnotationConstants(labelled, kind, elbow, tip_axis4, wrist, tail)
-
-
-def _frame_after(cc, qa: np.ndarray, joint: int) -> tuple[np.ndarray, np.ndarray]:
-    """The kernel's frame of moving joint ``joint`` (0-based) after its motion at ``qa``
-    (rotation, origin; root frame)."""
-    R, p = np.eye(3), np.zeros(3)
-    for s in range(joint + 1):
-        p = p + R @ cc.t[s]
-        R = R @ cc.C[s]
-        if cc.prism[s]:
-            p = p + qa[s] * R[:, 2]
-        else:
-            c, sn = math.cos(qa[s]), math.sin(qa[s])
-            R = R @ np.array([[c, -sn, 0.0], [sn, c, 0.0], [0.0, 0.0, 1.0]])
-    return R, p
 
 
 def annotate(ch: IKChain, qa: np.ndarray) -> tuple[str | None, float]:

@@ -33,6 +33,7 @@ from app.kinematics import jit
 from app.kinematics.fk import frame_pose
 from app.kinematics.ik import branch_kernel, kernel
 from app.kinematics.ik.boundary import step_parameters
+from app.kinematics.ik.joint_frames import wrist_in_kernel_frame
 from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
 from app.kinematics.lazy import LazyKey
@@ -227,8 +228,7 @@ def _fixed_constants(robot: RobotModel, ch: IKChain) -> tuple:
     kind, elbow, tip4, wrist = point_kernel.NO_LABELS, False, False, np.zeros(3)
     if form is not None:
         kind, elbow, tip4 = branch_kernel.form_arrays(form)
-        if form.wrist is not None:
-            wrist = _wrist_in_chain_frame(robot, ch, form.pin_ids[4], form.wrist)
+        wrist = wrist_in_kernel_frame(robot, ch)
     cont = np.zeros(robot.n, dtype=np.bool_)
     cont[[i for i, j in enumerate(robot.joints) if j.continuous]] = True
     return (
@@ -237,31 +237,6 @@ def _fixed_constants(robot: RobotModel, ch: IKChain) -> tuple:
         np.ascontiguousarray(robot.upper, dtype=np.float64), cont,
         np.ascontiguousarray(wrist, dtype=np.float64), int(kind), bool(elbow), bool(tip4),
     )  # fmt: skip
-
-
-def _wrist_in_chain_frame(
-    robot: RobotModel, ch: IKChain, pin_id: int, wrist: np.ndarray
-) -> np.ndarray:
-    """The wrist point (given in Pinocchio's frame of joint ``pin_id``, the fifth moving
-    joint) in the chain constants' frame of that joint (z along its axis), from both
-    placements at one configuration (a generic one: any gives the same point)."""
-    model, k = robot.model, ch.k
-    data = model.createData()
-    qa = 0.3 + 0.1 * np.arange(k)
-    q = np.zeros(robot.n)
-    q[ch.active] = qa
-    pin.forwardKinematics(model, data, robot.to_pin(q))
-    w0 = data.oMi[pin_id].act(np.asarray(wrist, dtype=float))
-    # frames() applies joint 5's placement (R5, p5) to a point: p5 from 0, R5's columns
-    # from the unit vectors
-    R, p, z, o = np.empty((3, 3)), np.empty(3), np.empty((k, 3)), np.empty((k, 3))
-    placed = []
-    for u in (np.zeros(3), *np.eye(3)):
-        w = np.empty(3)
-        point_kernel.frames(qa, ch.chain_constants, R, p, z, o, w, np.ascontiguousarray(u))
-        placed.append(w)
-    R5 = np.column_stack([placed[i] - placed[0] for i in (1, 2, 3)])
-    return R5.T @ (w0 - placed[0])
 
 
 def verify(

@@ -40,7 +40,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from app.kinematics.ik import branch_kernel, kernel, warmup
+from app.kinematics.ik import branch_kernel, joint_frames, kernel, warmup
 from app.kinematics.ik.boundary import ChainConstants, StepParameters
 from app.kinematics.jit import jit
 from app.kinematics.paths.pose_kernel import piece_pose
@@ -86,50 +86,11 @@ class PointConstants(NamedTuple):
 
 @jit
 def frames(qa, chain, R, p, z, o, w, wrist):  # pragma: no cover
-    """Forward kinematics of the chain at ``qa`` (k,) from its constants: the frame's
-    rotation R (3, 3) and position p (3,), each moving joint's world axis z (k, 3) and a
-    point o (k, 3) on it, and the wrist point w (3,) = the placement of the fifth moving
-    joint applied to ``wrist`` (when k ≥ 5), all in the root frame, written in place."""
-    C, t, prism, last_C, last_t = chain.C, chain.t, chain.prism, chain.last_C, chain.last_t
-    k = qa.shape[0]
-    tmp = np.empty((3, 3))
-    for i in range(3):
-        p[i] = 0.0
-        for j in range(3):
-            R[i, j] = 1.0 if i == j else 0.0
-    for s in range(k):
-        for i in range(3):
-            p[i] += R[i, 0] * t[s, 0] + R[i, 1] * t[s, 1] + R[i, 2] * t[s, 2]
-        for i in range(3):
-            for j in range(3):
-                tmp[i, j] = R[i, 0] * C[s, 0, j] + R[i, 1] * C[s, 1, j] + R[i, 2] * C[s, 2, j]
-        for i in range(3):
-            for j in range(3):
-                R[i, j] = tmp[i, j]
-            z[s, i] = R[i, 2]
-            o[s, i] = p[i]
-        if prism[s]:
-            for i in range(3):
-                p[i] += qa[s] * R[i, 2]
-        else:
-            c = math.cos(qa[s])
-            sn = math.sin(qa[s])
-            for i in range(3):
-                x = R[i, 0]
-                y = R[i, 1]
-                R[i, 0] = c * x + sn * y
-                R[i, 1] = c * y - sn * x
-        if s == 4:
-            for i in range(3):
-                w[i] = p[i] + R[i, 0] * wrist[0] + R[i, 1] * wrist[1] + R[i, 2] * wrist[2]
-    for i in range(3):
-        p[i] += R[i, 0] * last_t[0] + R[i, 1] * last_t[1] + R[i, 2] * last_t[2]
-    for i in range(3):
-        for j in range(3):
-            tmp[i, j] = R[i, 0] * last_C[0, j] + R[i, 1] * last_C[1, j] + R[i, 2] * last_C[2, j]
-    for i in range(3):
-        for j in range(3):
-            R[i, j] = tmp[i, j]
+    """:func:`app.kinematics.ik.joint_frames.frames` of ``chain``
+    (:class:`~app.kinematics.ik.boundary.ChainConstants`)."""
+    joint_frames.frames(
+        qa, chain.C, chain.t, chain.prism, chain.last_C, chain.last_t, R, p, z, o, w, wrist
+    )
 
 
 @jit
