@@ -2,8 +2,9 @@
 the solve's result, and the error answers of bad binary IK frames.
 
 References: NumPy's reading and writing of little-endian float64 (``np.frombuffer``,
-``ndarray.tobytes``) and :func:`app.api.schemas.stream.binary_answer` of the JSON answer
-(the stream's binary answers before they were written from the result).
+``ndarray.tobytes``) and docs/stream.md's layout of the binary ik answer, encoded by NumPy
+from the JSON answer's fields (as the stream's binary answers were before they were written
+from the result).
 """
 
 from __future__ import annotations
@@ -16,7 +17,6 @@ import pytest
 
 from app.api.schemas.stream import (
     StreamMessageError,
-    binary_answer,
     binary_ik_answer,
     parse_binary,
 )
@@ -56,8 +56,15 @@ def test_binary_frames_decode_as_numpy_reads_them() -> None:
         assert np.array(payload, "<f8").tobytes() == reference[2:].tobytes()
 
 
+def _documented_ik_answer(msg_id: float, out: dict) -> bytes:
+    """docs/stream.md's binary ik answer of the JSON answer ``out``: ``[3, id, success,
+    q..., position_error, orientation_error]`` little-endian float64 (NumPy's encoding)."""
+    body = [float(out["success"]), *out["q"], out["position_error"], out["orientation_error"]]
+    return np.array([3.0, msg_id, *body], dtype="<f8").tobytes()
+
+
 def test_the_binary_ik_answer_is_the_json_answers_floats() -> None:
-    """Written from the result, the answer is byte for byte ``binary_answer`` of the JSON
+    """Written from the result, the answer is byte for byte the documented layout of the JSON
     answer's fields (random results of 6 and 7 joints, success and failure)."""
     rng = np.random.default_rng(11)
     for k in range(500):
@@ -75,7 +82,7 @@ def test_the_binary_ik_answer_is_the_json_answers_floats() -> None:
             "position_error": res.position_error,
             "orientation_error": res.orientation_error,
         }
-        assert binary_ik_answer(msg_id, res) == binary_answer("ik", msg_id, out)  # type: ignore[arg-type]
+        assert binary_ik_answer(msg_id, res) == _documented_ik_answer(msg_id, out)  # type: ignore[arg-type]
 
 
 @pytest.mark.parametrize(

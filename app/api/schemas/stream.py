@@ -164,27 +164,22 @@ def parse_binary(data: bytes, robot_id: str, stream_path: str) -> Message:
 
 
 def binary_answer(op: str, msg_id: float, out: dict[str, Any]) -> bytes:
-    """The binary answer of ``op``: ``[op code, id, ...]`` little-endian float64.
-
-    fk: the first pose as ``[x, y, z, qx, qy, qz, qw]``; jacobian: the 6×n matrix row-major;
-    ik: ``[success (1 or 0), q (n values), position_error, orientation_error]``.
-    """
+    """The binary answer of an fk or jacobian frame: ``[op code, id, ...]`` little-endian
+    float64; fk: the first pose as ``[x, y, z, qx, qy, qz, qw]``; jacobian: the 6×n matrix
+    row-major (ik frames: :func:`binary_ik_answer`)."""
     head = [float(OP_CODES[op]), msg_id]
     if op == "fk":
         pose = next(iter(out["poses"].values()))
         body = [*pose["position"], *pose["orientation"]]
-    elif op == "jacobian":
-        body = np.asarray(out["jacobian"], dtype=float).ravel().tolist()
     else:
-        body = [float(out["success"]), *out["q"], out["position_error"], out["orientation_error"]]
+        body = np.asarray(out["jacobian"], dtype=float).ravel().tolist()
     return np.array(head + body, dtype=LITTLE_F8).tobytes()
 
 
 def binary_ik_answer(msg_id: float, res: IKResult) -> bytes:
-    """A binary ik frame's answer straight from the solve's result ``res``: the bytes of
-    ``binary_answer("ik", msg_id, out)`` for the JSON answer ``out`` of ``res``,
-    ``[3, id, success (1 or 0), q (n values), position_error (m), orientation_error (rad)]``
-    little-endian float64, without building that answer."""
+    """A binary ik frame's answer straight from the solve's result ``res`` (no JSON answer
+    built): ``[3, id, success (1 or 0), q (n values), position_error (m),
+    orientation_error (rad)]`` little-endian float64."""
     q = res.q.tolist()
     return struct.pack(
         f"<{len(q) + 5}d",
