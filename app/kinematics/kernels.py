@@ -3,7 +3,8 @@
 
 The solver's kernels (:mod:`app.kinematics.ik.warmup`) and the paths' compiled point
 (:mod:`app.kinematics.paths.point_kernel`, with a segment's pose of
-:mod:`~app.kinematics.paths.pose_kernel`) are compiled by Numba on first use, or loaded from
+:mod:`~app.kinematics.paths.pose_kernel`, and the walk over a run of waypoints of
+:mod:`~app.kinematics.paths.walk_kernel`) are compiled by Numba on first use, or loaded from
 its on-disk cache. The service warms them all at start-up; the image's build runs
 ``python -m app warm-up --require-cache`` and trusts :func:`kernel_cache_stats` to prove that
 every kernel loads from the image's cache.
@@ -14,7 +15,7 @@ from __future__ import annotations
 from app.kinematics import analytic_ik
 from app.kinematics.ik import annotate, branch_kernel, joint_frames, kernel, search_kernel, warmup
 from app.kinematics.jit import available
-from app.kinematics.paths import point_kernel, pose_kernel
+from app.kinematics.paths import point_kernel, pose_kernel, walk_kernel
 
 #: The modules whose Numba dispatchers are the core's kernels.
 KERNEL_MODULES = (
@@ -26,6 +27,7 @@ KERNEL_MODULES = (
     analytic_ik.ur,
     point_kernel,
     pose_kernel,
+    walk_kernel,
 )
 
 

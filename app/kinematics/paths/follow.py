@@ -37,6 +37,17 @@ The first waypoint that cannot be reached ends the walk: the result keeps the po
 the sampled list, a typed ``reason`` and the best configuration met. A ``deadline``
 (:func:`time.perf_counter` instant) bounds the whole call: once passed, the walk stops
 before the next waypoint with the reason ``timeout``.
+
+The compiled walk: where no ``accept`` is given and the compiled point applies, runs of
+consecutive waypoints of one segment go through one compiled call
+(:mod:`.walk_kernel`), which stops at the first waypoint that is not a plain point (the
+local attempt accepted, the middle within half ``max_deviation``) and hands it to the
+walk above, so the points are those of the per-point walk. The deadline is then read
+before each run of at most :data:`WALK_RUN` waypoints (≈ 0.2 ms), not before each of them.
+
+Why one module: the walk's state (:class:`_Walk`), its steps (local attempt, halving,
+fallback, densification) and the loop over the waypoints share the walk's private state
+and call each other; split, they would import each other.
 """
 
 from __future__ import annotations
@@ -61,7 +72,7 @@ from app.kinematics.ik.search import Clock
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
 from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
-from app.kinematics.paths.segments import CartesianPath, Target, check_max_step
+from app.kinematics.paths.segments import CartesianPath, Samples, Target, check_max_step
 
 __all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
 
@@ -77,6 +88,8 @@ FRACTIONS = (0.25, 0.5, 0.75)
 MIDDLE_FIRST = (0.5, 0.25, 0.75)
 #: Smallest time budget (ms) of an IK solve once the path's deadline is near or past.
 MIN_SOLVE_MS = 0.1
+#: Most waypoints the compiled walk takes between two readings of the deadline's clock.
+WALK_RUN = 16
 
 
 @dataclass(frozen=True, slots=True)
@@ -437,7 +450,7 @@ def follow(
     if options.branch is not None and label != options.branch:
         where = "has no branch labels" if label is None else f"starts on branch {label!r}"
         raise InvalidInputError(f"the path {where}, not {options.branch!r}", "branch")
-    walk.warm.prepare(q0, label, options.max_joint_step)
+    compiled_walk = walk.warm.prepare(q0, label, options.max_joint_step)
     ep, er = residuals(frame_pose(robot, q0, walk.ch.frame_id), path.start, walk.task)
     tol_p, tol_r = ik_options.tolerance
     if ep > tol_p or er > tol_r:
@@ -445,7 +458,7 @@ def follow(
             f"the path does not start at the frame's pose at start ({ep:.3g} m, {er:.3g} rad away)",
             "start",
         )
-    poses, ss = path.sample_targets(options.max_step)
+    samples = path.sample_arrays(options.max_step)
     points = walk.points
     failure: PathFailure | None = None
     if accept is not None and not accept(q0):
@@ -454,21 +467,52 @@ def follow(
         )
     else:
         points.append(PathPoint(q0.copy(), ep, er, 0.0))
-    for k in range(1, len(poses)) if failure is None else ():
-        if deadline is not None and walk.now() >= deadline:
-            failure = _timed_out(walk, k, float(ss[k]))
-            break
-        out = walk.advance(poses[k], float(ss[k]))
-        if out is not None:
-            res, g, T, s = out
-            failure = classify(walk.robot, walk.ch, walk.task, k, s, points[-1], res, g, T)
-            break
+        failure = _walk(walk, samples, compiled_walk and accept is None, clock is None)
     return PathResult(
         points,
         points[-1].s if points else 0.0,
         failure,
         label,
-        len(poses),
+        len(samples),
         walk.iterations,
         (time.perf_counter() - t0) * 1e3,
     )
+
+
+def _walk(walk: _Walk, samples: Samples, runs: bool, own_clock: bool) -> PathFailure | None:
+    """Append the points of waypoints 1, 2, ... of ``samples`` after the start until the
+    last one, or return the first failure.
+
+    With ``runs`` (the compiled point on, no ``accept``) the waypoints go by runs through
+    the compiled walk (:meth:`LocalSolver.walk`): a whole segment without a deadline, else
+    at most :data:`WALK_RUN` waypoints of one (one waypoint when the clock is injected, not
+    ``own_clock``: a test's clock is read before every waypoint). A run's first waypoint
+    that is not a plain point is taken by :meth:`_Walk.advance`, as every waypoint is
+    without ``runs``. The deadline is read before each run or waypoint so taken."""
+    deadline, points, ss, size = walk.deadline, walk.points, samples.s, len(samples)
+    longest = size if deadline is None else WALK_RUN if own_clock else 1
+    if runs:
+        Q, E, seg = np.empty((size, walk.robot.n)), np.empty((size, 2)), 0
+        half = (0.5 * walk.options.max_deviation[0], 0.5 * walk.options.max_deviation[1])
+    k = 1
+    while k < size:
+        if deadline is not None and walk.now() >= deadline:
+            return _timed_out(walk, k, float(ss[k]))
+        if runs:
+            while samples.runs[seg][1] <= k:
+                seg += 1
+            stop = min(samples.runs[seg][1], k + longest)
+            m, n = walk.warm.walk(points[-1].q, samples, k, stop, seg, half, Q, E)
+            walk.iterations += n
+            errors, s_run = E[k : k + m].tolist(), ss[k : k + m].tolist()
+            for j in range(m):
+                points.append(PathPoint(Q[k + j], errors[j][0], errors[j][1], s_run[j]))
+            k += m
+            if k == stop:
+                continue
+        out = walk.advance(samples.target(k), float(ss[k]))
+        if out is not None:
+            res, g, T, s = out
+            return classify(walk.robot, walk.ch, walk.task, k, s, points[-1], res, g, T)
+        k += 1
+    return None

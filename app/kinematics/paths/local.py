@@ -38,9 +38,10 @@ from app.kinematics.ik.precompute import IKChain
 from app.kinematics.ik.problem import Task
 from app.kinematics.lazy import LazyKey
 from app.kinematics.models import RobotModel
-from app.kinematics.paths import point_kernel
+from app.kinematics.paths import point_kernel, walk_kernel
 from app.kinematics.paths.failures import Guard, residuals
 from app.kinematics.paths.pose_kernel import PieceArrays
+from app.kinematics.paths.segments import Samples
 
 #: Jacobian evaluations of the local attempt at a point (a warm step needs 2–4).
 LOCAL_ITERATIONS = 30
@@ -93,6 +94,7 @@ class LocalSolver:
         self._q = np.empty(robot.n)
         self._out = np.empty(5)
         self._err = np.empty(2)
+        self._iterations = np.empty(1)
 
     def constants(self, max_joint_step: float) -> point_kernel.PointConstants | None:
         """The compiled point's constants for ``max_joint_step`` (rad or m), or None when
@@ -156,6 +158,41 @@ class LocalSolver:
         if status != point_kernel.OK:
             return status, None, 0.0, 0.0, n, 0.0, 0.0
         return status, q.copy(), float(out[0]), float(out[1]), n, float(out[3]), float(out[4])
+
+    def walk(
+        self,
+        q_prev: np.ndarray,
+        samples: Samples,
+        first: int,
+        stop: int,
+        run: int,
+        half: tuple[float, float],
+        Q: np.ndarray,
+        E: np.ndarray,
+    ) -> tuple[int, int]:
+        """The plain points of waypoints ``first ≤ k < stop`` of ``samples`` (all on the
+        segment ``samples.runs[run]``) from the last point ``q_prev`` in one compiled call
+        (:func:`app.kinematics.paths.walk_kernel.run`; :meth:`prepare` first), ``half``
+        half the deviation bounds (m, rad); rows k of ``Q`` (N, n) and ``E`` (N, 2) receive
+        the accepted waypoints' configurations and errors (m, rad).
+
+        Returns
+        -------
+        accepted, iterations
+            How many waypoints from ``first`` on are plain points (the next one, if any
+            before ``stop``, is not: the Python walk takes it), and their attempts'
+            Jacobian evaluations.
+        """
+        pc = self.compiled
+        assert pc is not None, "prepare() first"
+        _, _, a, b, piece = samples.runs[run]
+        args = (
+            np.ascontiguousarray(q_prev, dtype=np.float64), pc, self._label, samples.R,
+            samples.p, samples.s, int(first), int(stop), piece, a, b, half[0], half[1], Q, E,
+            self._iterations,
+        )  # fmt: skip
+        accepted = int(jit.direct(walk_kernel.run, *args)(*args))
+        return accepted, int(self._iterations[0])
 
     def check(
         self, q_prev: np.ndarray, q: np.ndarray, target: pin.SE3

@@ -99,6 +99,42 @@ class Target:
         return self._se3
 
 
+class Samples:
+    """The sampled waypoints of :meth:`CartesianPath.sample_arrays` as stacked arrays, the
+    same poses and ``s`` as :meth:`CartesianPath.sample_targets`, and the segment each lies
+    on (for the compiled walk, :mod:`.walk_kernel`).
+
+    ``R`` (N, 3, 3), ``p`` (N, 3): waypoint k's rotation and position (root frame, m),
+    C-contiguous float64, never modified; ``s`` (N,): its path parameter; ``runs``: per
+    segment with waypoints, in order, ``(first, stop, a, b, piece)``: its waypoints are
+    ``first ≤ k < stop`` (the last one its end pose exactly), it spans a < s ≤ b, and
+    ``piece`` is its :meth:`_Piece.arrays`. :meth:`target` gives waypoint k as a
+    :class:`Target` (built once, views of the rows).
+    """
+
+    __slots__ = ("R", "_targets", "p", "runs", "s")
+
+    def __init__(
+        self,
+        R: np.ndarray,
+        p: np.ndarray,
+        s: np.ndarray,
+        runs: list[tuple[int, int, float, float, PieceArrays]],
+    ) -> None:
+        self.R, self.p, self.s, self.runs = R, p, s, runs
+        self._targets: list[Target | None] = [None] * len(s)
+
+    def __len__(self) -> int:
+        return len(self.s)
+
+    def target(self, k: int) -> Target:
+        """Waypoint ``k`` as a :class:`Target` (its arrays are views of ``R[k]``, ``p[k]``)."""
+        t = self._targets[k]
+        if t is None:
+            t = self._targets[k] = Target(self.R[k], self.p[k])
+        return t
+
+
 def _target(T: pin.SE3) -> Target:
     """``T`` as a :class:`Target` (copies)."""
     return Target(np.array(T.rotation, order="C"), np.array(T.translation, order="C"))
@@ -300,6 +336,35 @@ class CartesianPath:
                 poses.append(piece.target(u))
                 ss.append(b if k == n else a + u * (b - a))
         return poses, np.array(ss)
+
+    def sample_arrays(self, max_step: tuple[float, float]) -> Samples:
+        """:meth:`sample_targets` as stacked arrays (:class:`Samples`): bit for bit the same
+        poses and ``s``. A line that does not turn (its rotation is its start's until the
+        end) is computed for all its waypoints at once, by the same elementwise operations
+        (p₀ + u·Δp, u = k/n, s = a + u·(b − a)); other segments pose by pose as there."""
+        counts = self._counts(max_step)
+        size = 1 + sum(counts)
+        R, p, ss = np.empty((size, 3, 3)), np.empty((size, 3)), np.empty(size)
+        R[0], p[0], ss[0] = self.start.rotation, self.start.translation, 0.0
+        runs: list[tuple[int, int, float, float, PieceArrays]] = []
+        k = 1
+        for piece, n, a, b in zip(self._pieces, counts, self._starts, self.ends, strict=True):
+            if n == 0:
+                continue
+            last = k + n - 1
+            u = np.arange(1, n) / n  # k / n, exactly
+            if not piece.arc and not piece.th1 > NO_TURN:
+                R[k:last] = piece.R0
+                p[k:last] = piece.p0 + u[:, None] * piece.dp
+            else:
+                for i in range(1, n):
+                    R[k + i - 1], p[k + i - 1] = piece._pose_arrays(i / n)
+            R[last], p[last] = piece.end.rotation, piece.end.translation
+            ss[k:last] = a + u * (b - a)
+            ss[last] = b
+            runs.append((k, last + 1, float(a), float(b), piece.arrays()))
+            k = last + 1
+        return Samples(R, p, ss, runs)
 
     def piece_at(self, s: float) -> tuple[PieceArrays, float]:
         """The segment (:meth:`_Piece.arrays`) and its parameter u whose pose is
