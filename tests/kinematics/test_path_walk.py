@@ -21,6 +21,7 @@ import pinocchio as pin
 import pytest
 
 from app.kinematics.paths import follow as follow_module
+from app.kinematics.paths import point_kernel
 from app.kinematics.paths.follow import WALK_RUN, PathOptions, PathResult, follow
 from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import Arc, CartesianPath, Line
@@ -39,10 +40,12 @@ class _Spy:
 
     def __init__(self, mp: pytest.MonkeyPatch, off: bool = False) -> None:
         self.calls = self.accepted = 0
+        self.halves: set[tuple[float, float]] = set()
         original = LocalSolver.walk
 
         def walk(solver, *args):
             self.calls += 1
+            self.halves.add(args[5])
             if off:
                 return 0, 0
             out = original(solver, *args)
@@ -99,6 +102,8 @@ def test_compiled_walk_finds_the_per_point_walks_points(
         densified += len(new.points) > new.waypoints
         accepted += spy.accepted
         waypoints += new.waypoints - 1
+        dev_p, dev_r = options.max_deviation
+        assert spy.halves == {(0.5 * dev_p, 0.5 * dev_r)}  # the middle's test of deviation()
     assert failed > 0
     # plain: the compiled walk takes almost every waypoint; dense: about half of them
     assert accepted >= (0.8 if options is PLAIN else 0.3) * waypoints
@@ -115,7 +120,7 @@ def test_compiled_walk_on_arcs_turning_segments_and_waypoints(
     robot = registry.get(robot_id)
     opts = ik_options(frame)
     rng = np.random.default_rng(12)
-    runs = 0
+    runs = accepted = waypoints = 0
     for line in random_lines(robot, frame, 8, seed=78, checks=4):
         T0, T1 = line.start, line.end
         mid = 0.5 * (T0.translation + T1.translation)
@@ -131,7 +136,10 @@ def test_compiled_walk_on_arcs_turning_segments_and_waypoints(
             _assert_same(new, old)
             check_points(robot, frame, line.q0, path, new, PLAIN)
             runs += spy.calls
+            accepted += spy.accepted
+            waypoints += new.waypoints - 1
     assert runs > 16
+    assert accepted >= 0.7 * waypoints
 
 
 @pytest.mark.parametrize(("robot_id", "frame"), ARMS[:2])
@@ -228,3 +236,57 @@ def test_the_deadline_is_read_before_each_run(registry, robot_id: str, frame: st
     for p, q in zip(res.points, full.points, strict=False):
         assert p.s == q.s
         np.testing.assert_array_equal(p.q, q.q)
+
+
+@pytest.mark.parametrize("bound", ["position", "rotation"])
+@pytest.mark.parametrize(("robot_id", "frame"), ARMS)
+def test_a_run_stops_exactly_at_the_first_waypoint_that_is_not_plain(
+    registry, robot_id: str, frame: str, bound: str
+) -> None:
+    """The compiled walk against the per-point compiled step (:meth:`LocalSolver.point`,
+    the middle from :meth:`CartesianPath.piece_at`) on the segments of a polyline: it
+    accepts waypoints while the step is ``OK`` and the middle's deviation within the half
+    bounds given (here the median deviation on one component, unbounded on the other), with
+    the step's configurations, errors and iterations, and stops at the first other one."""
+    robot = registry.get(robot_id)
+    opts = ik_options(frame)
+    ch = follow_module._frame_and_chain(robot, opts)
+    solver = LocalSolver(robot, ch, opts.task(), opts.tolerance, None)
+    for line in random_lines(robot, frame, 8, seed=81, checks=4):
+        T0, T1 = line.start, line.end
+        bend = pin.SE3(T1.rotation, 0.5 * (T0.translation + T1.translation) + [0, 0, 0.04])
+        path = CartesianPath.from_waypoints(T0, [bend, T1])
+        label = follow_module.branch_of(robot, ch, line.q0)
+        assert solver.prepare(line.q0, label, PLAIN.max_joint_step)
+        samples = path.sample_arrays(PLAIN.max_step)
+        s = samples.s
+        # the per-point steps along the path from the start (each from the previous point)
+        steps, q_prev = [None], line.q0
+        for k in range(1, len(samples)):
+            middle = path.piece_at(0.5 * (s[k - 1] + s[k]))
+            steps.append(solver.point(q_prev, samples.R[k], samples.p[k], middle))
+            if steps[-1][0] != point_kernel.OK:
+                break
+            q_prev = steps[-1][1]
+        if len(steps) == len(samples) and steps[-1][0] == point_kernel.OK:
+            break
+    else:
+        raise AssertionError("no line of OK steps in 8 draws")
+    devs = np.array([(o[5], o[6]) for o in steps[1:]])
+    i = 0 if bound == "position" else 1
+    half = [np.inf, np.inf]
+    half[i] = float(np.median(devs[:, i]))
+    stopped = 0
+    for seg, (first, stop, *_) in enumerate(samples.runs):
+        Q, E = np.full((len(samples), robot.n), np.nan), np.full((len(samples), 2), np.nan)
+        q_prev = line.q0 if first == 1 else steps[first - 1][1]
+        m, n = solver.walk(q_prev, samples, first, stop, seg, tuple(half), Q, E)
+        plain = [steps[k][5 + i] <= half[i] for k in range(first, stop)]
+        want = plain.index(False) if False in plain else stop - first
+        assert m == want
+        stopped += m < stop - first
+        assert n == sum(steps[k][4] for k in range(first, first + m))
+        for k in range(first, first + m):
+            np.testing.assert_array_equal(Q[k], steps[k][1])
+            assert (E[k, 0], E[k, 1]) == (steps[k][2], steps[k][3])
+    assert len(samples.runs) == 2 and stopped > 0
