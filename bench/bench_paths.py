@@ -15,12 +15,17 @@ Reported per robot:
   returned (densified points included), against a single
   ``ik.solve`` per point on the same poses from a cold seed (the middle of the joint limits,
   what a client calling POST /ik per point gets), and their ratio (target ≤ 0.5); beside
-  it the same ``follow`` with the per-point checks in Python (the baseline: the compiled
-  point of :mod:`app.kinematics.paths.point_kernel` switched off), the three timed line by
-  line in rotating order so that load hits all alike, and whether both answered the same
-  points;
+  it the same ``follow`` waypoint by waypoint (the compiled walk of
+  :mod:`app.kinematics.paths.walk_kernel` switched off: one compiled point per waypoint,
+  the code before it) and with the per-point checks in Python (the compiled point of
+  :mod:`app.kinematics.paths.point_kernel` switched off too), the four timed line by line
+  in rotating order so that load hits all alike, and whether the three ``follow`` s
+  answered the same points;
 - the failure reasons of ``follow``, and its mean wall time on a line it could not finish
   (the halved steps and the last full-budget attempt).
+
+Every ``follow`` has the service's deadline (now + 30 s, ``ik_max_request_s``'s default),
+so the compiled walk goes by runs of at most ``WALK_RUN`` waypoints, as served.
 
 Environment: ``DENAVIT_BENCH_PATHS_N`` (lines per robot, default 1000).
 """
@@ -50,6 +55,22 @@ OPTIONS = PathOptions(max_step=(0.01, 0.05), max_joint_step=0.1)
 SEED = 2026
 #: The target: follow's time per point at most this fraction of a cold single IK.
 TARGET = 0.5
+
+
+#: The service's deadline of a path (s from the call): ``ik_max_request_s``'s default.
+DEADLINE_S = 30.0
+
+
+@contextmanager
+def per_point() -> Iterator[None]:
+    """The walk before the compiled walk: every waypoint through the per-point walk (one
+    compiled point per waypoint; :meth:`LocalSolver.walk` accepts none)."""
+    walk = LocalSolver.walk
+    LocalSolver.walk = lambda self, *args: (0, 0)  # type: ignore[method-assign]
+    try:
+        yield
+    finally:
+        LocalSolver.walk = walk  # type: ignore[method-assign]
 
 
 @contextmanager
@@ -89,14 +110,20 @@ def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
     opts = IKOptions(frame=frame, max_iterations=200, timeout_ms=50.0)
     lines = random_lines(robot, frame, n, SEED)
     done = naive_done = points = 0
-    t_follow = t_old = t_cold = t_failed = 0.0
+    t_follow = t_point = t_old = t_cold = t_failed = 0.0
     same = True
     reasons: Counter[str] = Counter()
     for i, line in enumerate(lines):
         path = CartesianPath.from_segments(line.start, [Line(line.end)])
 
         def new(path=path, line=line, i=i) -> PathResult:
-            return follow(robot, line.q0, path, opts, OPTIONS, rng=np.random.default_rng(i))
+            deadline = time.perf_counter() + DEADLINE_S
+            rng = np.random.default_rng(i)
+            return follow(robot, line.q0, path, opts, OPTIONS, rng=rng, deadline=deadline)
+
+        def point(new=new) -> PathResult:
+            with per_point():
+                return new()
 
         def old(new=new) -> PathResult:
             with python_checks():
@@ -116,13 +143,15 @@ def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
             for p in pts:
                 ik.solve(robot, path.pose_at(p.s), opts)
 
-        # the three in rotating order, each timed once more (the first run above warmed up)
+        # the four in rotating order, each timed once more (the first run above warmed up)
         timed: dict[str, float] = {}
-        for name in ("new", "old", "cold")[i % 3 :] + ("new", "old", "cold")[: i % 3]:
-            out, timed[name] = _timed({"new": new, "old": old, "cold": cold}[name])
-            if name == "old":
+        names = ("new", "point", "old", "cold")
+        for name in names[i % 4 :] + names[: i % 4]:
+            out, timed[name] = _timed({"new": new, "point": point, "old": old, "cold": cold}[name])
+            if name in ("new", "point", "old"):
                 same = same and _same(res, out)
         t_follow += timed["new"]
+        t_point += timed["point"]
         t_old += timed["old"]
         t_cold += timed["cold"]
     return {
@@ -132,6 +161,7 @@ def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
         "follow": done / n,
         "naive": naive_done / n,
         "follow_ms": 1e3 * t_follow / max(points, 1),
+        "point_ms": 1e3 * t_point / max(points, 1),
         "old_ms": 1e3 * t_old / max(points, 1),
         "cold_ms": 1e3 * t_cold / max(points, 1),
         "points": points,
@@ -142,12 +172,16 @@ def run(reg: Registry, rid: str, frame: str, n: int) -> dict:
 
 
 def _same(a: PathResult, b: PathResult | None) -> bool:
-    """Whether two answers have the same points (configurations to 1e-9, s exactly)."""
+    """Whether two answers have the same points (s exactly; configurations and errors to
+    1e-12)."""
     return (
         b is not None
         and len(a.points) == len(b.points)
         and all(
-            p.s == r.s and np.allclose(p.q, r.q, rtol=0.0, atol=1e-9)
+            p.s == r.s
+            and np.allclose(p.q, r.q, rtol=0.0, atol=1e-12)
+            and abs(p.position_error - r.position_error) <= 1e-12
+            and abs(p.orientation_error - r.orientation_error) <= 1e-12
             for p, r in zip(a.points, b.points, strict=True)
         )
     )
@@ -159,24 +193,27 @@ def main() -> None:
     print(f"machine: {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
     print(f"\n### {n} random lines per robot (0.1–0.5 m, orientation fixed)\n")
     print("| robot | frame | lines completed, follow | lines completed, naive | points "
-          "| follow (ms per point) | follow, Python checks (ms per point) "
-          "| cold single IK (ms per point) | ratio | ratio, Python checks | same points "
-          "| follow's failures | ms per failed line |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "| follow (ms per point) | follow, per point (ms per point) "
+          "| follow, Python checks (ms per point) "
+          "| cold single IK (ms per point) | ratio | ratio, per point | ratio, Python checks "
+          "| same points | follow's failures | ms per failed line |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     rows = []
     for rid, frame in ROBOTS:
         r = run(reg, rid, frame, n)
         rows.append(r)
         print(f"| {r['robot']} | {r['frame']} | {100 * r['follow']:.1f}% | "
               f"{100 * r['naive']:.1f}% | {r['points']} | {r['follow_ms']:.3f} | "
-              f"{r['old_ms']:.3f} | {r['cold_ms']:.3f} | {r['follow_ms'] / r['cold_ms']:.2f} | "
+              f"{r['point_ms']:.3f} | {r['old_ms']:.3f} | {r['cold_ms']:.3f} | "
+              f"{r['follow_ms'] / r['cold_ms']:.2f} | {r['point_ms'] / r['cold_ms']:.2f} | "
               f"{r['old_ms'] / r['cold_ms']:.2f} | {'yes' if r['same'] else 'NO'} | "
               f"{r['reasons']} | {r['failed_ms']:.1f} |",
               flush=True)  # fmt: skip
     print()
     for r in rows:
         ratio = r["follow_ms"] / r["cold_ms"]
-        print(f"target: {r['robot']} path per point ≤ {TARGET}× a cold single IK; baseline "
+        print(f"target: {r['robot']} path per point ≤ {TARGET}× a cold single IK; baselines "
+              f"(per point) {r['point_ms'] / r['cold_ms']:.2f}×, "
               f"(Python checks) {r['old_ms'] / r['cold_ms']:.2f}×, measured {ratio:.2f}× "
               f"({r['follow_ms']:.3f} / {r['cold_ms']:.3f} ms): "
               f"{'met' if ratio <= TARGET else 'not met'}")  # fmt: skip
