@@ -16,12 +16,14 @@ caps with a generous time budget: nothing depends on the machine's speed.
 
 from __future__ import annotations
 
+import numba
 import numpy as np
 import pinocchio as pin
 import pytest
 
+from app.kinematics import jit
 from app.kinematics.paths import follow as follow_module
-from app.kinematics.paths import point_kernel
+from app.kinematics.paths import point_kernel, walk_kernel
 from app.kinematics.paths.follow import WALK_RUN, PathOptions, PathResult, follow
 from app.kinematics.paths.local import LocalSolver
 from app.kinematics.paths.segments import Arc, CartesianPath, Line
@@ -290,3 +292,29 @@ def test_a_run_stops_exactly_at_the_first_waypoint_that_is_not_plain(
             np.testing.assert_array_equal(Q[k], steps[k][1])
             assert (E[k, 0], E[k, 1]) == (steps[k][2], steps[k][3])
     assert len(samples.runs) == 2 and stopped > 0
+
+
+def test_warm_up_compiles_the_signature_the_walk_uses(registry) -> None:
+    """warm_up() compiles run() for exactly the argument types LocalSolver.walk passes, and
+    registers with the solver's warm-up (so a warmed process never compiles on a path
+    request, and a chain is prepared only once the walk is compiled)."""
+    from app.kinematics.ik import warmup
+
+    assert walk_kernel.warm_up in warmup._CALLERS
+    walk_kernel.warm_up()
+    robot = registry.get("ur5")
+    opts = ik_options("tool0")
+    ch = follow_module._frame_and_chain(robot, opts)
+    solver = LocalSolver(robot, ch, opts.task(), opts.tolerance, None)
+    line = random_lines(robot, "tool0", 1, seed=3, checks=2)[0]
+    assert solver.prepare(line.q0, follow_module.branch_of(robot, ch, line.q0), 0.1)
+    samples = CartesianPath.from_segments(line.start, [Line(line.end)]).sample_arrays(
+        PLAIN.max_step
+    )
+    seen: list[tuple] = []
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(jit, "direct", lambda fn, *args: seen.append(args) or fn)
+        solver.walk(line.q0, samples, 1, 2, 0, (5e-4, 5e-3), np.empty((2, 6)), np.empty((2, 2)))
+    warm = walk_kernel.warm_up_arguments()
+    assert [numba.typeof(a) for a in seen[0]] == [numba.typeof(a) for a in warm]
+    assert tuple(numba.typeof(a) for a in warm) in walk_kernel.run.signatures
