@@ -11,7 +11,9 @@ The package, one concept per module:
   the previous point) and its independent verification;
 - :mod:`.point_kernel`: that attempt and its checks (a forward kinematics of its own,
   limits, pose error, joint step, branch flags, the deviation at the middle) as one
-  compiled call per point; :mod:`.pose_kernel`: a segment's pose in compiled code;
+  compiled call per point; :mod:`.walk_kernel`: runs of waypoints of one segment in one
+  compiled call (no collision predicate), handing back the first that is not plain;
+  :mod:`.pose_kernel`: a segment's pose in compiled code;
 - :mod:`.failures`: the joint-step, branch and collision guards inside the solver, and the
   typed failure (``reason``, ``detail``) of the first point that cannot be reached;
 - :mod:`.timing`: time-optimal parameterization of the joint path (toppra) under velocity

@@ -43,7 +43,8 @@ consecutive waypoints of one segment go through one compiled call
 (:mod:`.walk_kernel`), which stops at the first waypoint that is not a plain point (the
 local attempt accepted, the middle within half ``max_deviation``) and hands it to the
 walk above, so the points are those of the per-point walk. The deadline is then read
-before each run of at most :data:`WALK_RUN` waypoints (≈ 0.2 ms), not before each of them.
+before each run of at most :data:`WALK_RUN` waypoints (~0.1 ms of compiled work), not
+before each of them.
 
 Why one module: the walk's state (:class:`_Walk`), its steps (local attempt, halving,
 fallback, densification) and the loop over the waypoints share the walk's private state

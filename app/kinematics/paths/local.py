@@ -19,7 +19,8 @@ supports (``IKChain.compiled``); other tasks always use :func:`app.kinematics.ik
 Once :meth:`LocalSolver.prepare` has the path's start, joint step and branch label,
 :meth:`LocalSolver.point` makes the attempt and every check above but the caller's
 ``accept`` in one compiled call (:mod:`.point_kernel`, its forward kinematics composed
-afresh from the chain constants, tested against Pinocchio's and against :func:`verify`);
+afresh from the chain constants, tested against Pinocchio's and against :func:`verify`),
+and :meth:`LocalSolver.walk` the same for a run of waypoints (:mod:`.walk_kernel`);
 :meth:`LocalSolver.attempt` and :func:`verify` remain the path where it does not apply
 (no compiled kernel, or the compiled flags of the start disagree with its label).
 """
