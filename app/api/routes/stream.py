@@ -48,8 +48,8 @@ from app.api.schemas.stream import (
 )
 from app.kinematics import ik
 from app.kinematics.errors import Cancelled, KinematicsError
-from app.kinematics.ik.problem import target_placement
 from app.kinematics.models import RobotModel
+from app.kinematics.placement import pose_se3
 from app.operations.settings import Settings
 
 log = logging.getLogger("denavit")
@@ -306,7 +306,7 @@ class _Session:
         seeded by the socket's last solution; no branch labels (its answer has none)."""
         plan, robot = self._binary_plan(), self.robot
         assert robot is not None
-        target = target_placement(pose[:3], pose[3:], None, plan.options.mode, "target")
+        target = pose_se3(pose, "target")  # checked as a JSON target is (any mode: both given)
         return await self._solve(plan, plan.call(robot, target, self.last_q, annotate=False))
 
     async def _solve(self, plan: IKPlan, solve: Callable[..., ik.IKResult]) -> ik.IKResult:
