@@ -41,6 +41,7 @@ LITTLE_F8 = np.dtype("<f8")
 IK_CODE = float(OP_CODES["ik"])
 #: A binary ik frame: [3, id, x, y, z, qx, qy, qz, qw].
 _IK_FRAME = struct.Struct(f"<{2 + POSE_FLOATS}d")
+BINARY_IK_BYTES = _IK_FRAME.size
 
 
 class StreamMessageError(Exception):
