@@ -16,6 +16,11 @@ Then the per-target cost of carrying answers between a worker and the server, be
 and turned into wire entries in the server) and now (each answer written into shared
 columns in the worker, only the failure notes pickled; the server copies the columns out
 and writes the entries from them), on the same solved answers, alternating round by round.
+Then what the machine itself gives two processes, with no pool and no IPC
+(:mod:`bench._machine_ceiling`): the same solver loop over the same targets in two
+independent processes started together (half the targets each) against one doing all, and
+a pure CPU-bound compiled loop the same way, printed beside the pool's speed-up and its
+one-chunk-per-worker ceiling.
 Last, the target line: speed-up of 2 processes over 1 ≥ 1.8× on both robots.
 
 Environment: ``DENAVIT_BENCH_BATCH_N`` (targets per robot, default 4000),
@@ -43,6 +48,7 @@ from app.kinematics.ik.problem import IKOptions
 from app.robots.registry import Registry
 from app.workers import default_processes, ik_batch
 from app.workers.ik_batch import BatchPool
+from bench._machine_ceiling import ceilings
 from bench.bench_ik import BUDGET_MS, targets
 
 #: The issue's target: the speed-up of 2 processes over 1 (medians), on both robots.
@@ -218,7 +224,8 @@ def main() -> None:
     ratio: dict[str, float] = {}
     cpu1: dict[str, float] = {}
     projected: dict[str, float] = {}
-    for rid, p, speed, solved, cpu in rates(n, rounds):
+    rows = rates(n, rounds)
+    for rid, p, speed, solved, cpu in rows:
         med, cpu_med = float(np.median(speed)), float(np.median(cpu))
         base.setdefault(rid, med)
         cpu1.setdefault(rid, cpu_med)
@@ -231,6 +238,22 @@ def main() -> None:
     print("\nCPU ratio, 2 × CPU per target of 1 process / CPU per target of the pool (server "
           "and workers): the speed-up 2 otherwise idle cores would give with no other loss: "
           + ", ".join(f"{rid} {r:.2f}×" for rid, r in projected.items()))  # fmt: skip
+    pool_ceiling: dict[str, float] = {}
+    for rid, p, speed, _, _ in rows:
+        if p == CEILING:
+            pool_ceiling[rid] = float(np.median(speed)) / base[rid]
+    frames = {"panda": "panda_link8", "ur5": "tool0"}
+    machine = ceilings({rid: (frames[rid], n) for rid in ratio}, rounds)
+    load = os.getloadavg()[0]
+    print(f"\nThe machine's own scaling: no pool, no IPC ({n} targets per robot or 2 units of a "
+          f"compiled loop; {rounds} alternating rounds; load average {load:.1f})\n")  # fmt: skip
+    print("| work | 1 process, wall (s) | 2 processes, wall (s) | speed-up (wall) "
+          "| CPU ratio | the pool: 2 processes / one chunk each |")  # fmt: skip
+    print("|---|---:|---:|---:|---:|---|")
+    for what, one, two, cpu in machine:
+        pool = f"{ratio[what]:.2f}× / {pool_ceiling[what]:.2f}×" if what in ratio else "—"
+        print(f"| {what} (independent processes) | {one:.3f} | {two:.3f} | {one / two:.2f}× "
+              f"| {cpu:.2f}× | {pool} |")  # fmt: skip
     m = min(n, 2000)
     print(f"\nAnswers between a worker and the server, µs per target ({m} answers, medians of "
           f"{max(rounds, 5)} alternating rounds):\n")  # fmt: skip
