@@ -6,10 +6,11 @@ within the limits, seed at mid-range, 5 ms per target) solved in the calling thr
 (1 process) and by a warm pool of 2 worker processes, alternating round by round so that
 load hits both alike; and, as the ceiling of the pool on this machine, the same two workers
 given one chunk (half the targets) each, so that the pool's per-chunk overhead is gone and
-only the machine's own scaling over two cores remains. Reported: targets/s (wall clock: the
-work spans processes) per round, the best and the median round, and the speed-up of the
-medians. Worth reading only with the machine otherwise idle: other work on the two cores
-takes from the pool first.
+only the machine's own scaling over two cores remains (and between the two, 4 equal chunks
+per worker: fewer and larger chunks than the pool's guided sizes). Reported: targets/s
+(wall clock: the work spans processes) per round, the best and the median round, and the
+speed-up of the medians. Worth reading only with the machine otherwise idle: other work on
+the two cores takes from the pool first.
 
 Then the per-target cost of carrying answers between a worker and the server, before
 (each chunk's list of :class:`~app.kinematics.ik.IKResult` pickled in the worker, unpickled
@@ -63,19 +64,37 @@ OLD_CHUNK = 256
 CEILING = "2, one chunk each"
 
 
+#: A chunking to compare with the pool's guided one: 4 equal chunks per worker (fewer,
+#: larger chunks than guided scheduling's ~11–20, at the price of a worse balance when
+#: targets' costs differ).
+EQUAL = "2, 4 equal chunks each"
+
+
 @contextlib.contextmanager
-def _one_chunk_per_process() -> Iterator[None]:
+def _equal_chunks(per_process: int) -> Iterator[None]:
     saved = ik_batch.chunk_sizes
 
-    def halves(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
-        size = math.ceil(n / processes)
+    def equal(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
+        size = math.ceil(n / (processes * per_process))
         return [min(size, n - a) for a in range(0, n, size)]
 
-    ik_batch.chunk_sizes = halves
+    ik_batch.chunk_sizes = equal
     try:
         yield
     finally:
         ik_batch.chunk_sizes = saved
+
+
+def _one_chunk_per_process() -> contextlib.AbstractContextManager[None]:
+    return _equal_chunks(1)
+
+
+def _chunking(p: int | str) -> contextlib.AbstractContextManager[None]:
+    if p == CEILING:
+        return _one_chunk_per_process()
+    if p == EQUAL:
+        return _equal_chunks(4)
+    return contextlib.nullcontext()
 
 
 def _cpu_s(pool: BatchPool) -> float:
@@ -94,7 +113,12 @@ def rates(n: int, rounds: int) -> list[tuple]:
     """Rows: robot, processes, targets/s of every round, solved, CPU µs per target of every
     round (the server's and the workers')."""
     reg = Registry()
-    pools: dict[int | str, BatchPool] = {1: BatchPool(1), 2: BatchPool(2), CEILING: BatchPool(2)}
+    pools: dict[int | str, BatchPool] = {
+        1: BatchPool(1),
+        2: BatchPool(2),
+        EQUAL: BatchPool(2),
+        CEILING: BatchPool(2),
+    }
     rows = []
     try:
         for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0")):
@@ -108,8 +132,7 @@ def rates(n: int, rounds: int) -> list[tuple]:
             solved = dict.fromkeys(pools, 0)
             for _ in range(rounds):
                 for p, pool in pools.items():
-                    chunks = _one_chunk_per_process() if p == CEILING else contextlib.nullcontext()
-                    with chunks:
+                    with _chunking(p):
                         c0, t0 = _cpu_s(pool), time.perf_counter()
                         out = pool.solve(robot, goals, task)
                         speed[p].append(n / (time.perf_counter() - t0))
