@@ -182,7 +182,7 @@ def pose_se3(pose: Sequence[float], field: str) -> pin.SE3:
     (the quaternion normalised, then :func:`~app.kinematics.rotations.quaternion_entries`,
     which normalises again, as :func:`placement` does) in Python floats, and one 4×4 array
     for the SE3, instead of a NumPy array per component and the :class:`Placement`
-    (~2.5× faster: 14.6 → 5.7 µs warm; docs/benchmarks.md)."""
+    (13.1 → 6.8 µs warm; docs/benchmarks.md)."""
     x, y, z, qx, qy, qz, qw = pose
     n = quaternion_norm(qx, qy, qz, qw)
     if not (
