@@ -473,3 +473,34 @@ def test_one_binary_frame_at_a_time_is_answered_by_the_reader(client, monkeypatc
             assert got == [3.0, i, 1.0, *ref["q"], ref["position_error"], ref["orientation_error"]]
             seed = ref["q"]
     assert seen[:2] == [False, False] and all(seen[2:]) and len(seen) == 6, seen  # fk, first
+
+
+def test_a_binary_frame_whose_chain_is_not_built_is_solved_in_the_pool(client, monkeypatch) -> None:
+    """While the chain of the socket's plan is not built (its first build, tens of ms, must
+    not stall the loop) a binary ik frame is solved in the pool; once it is, on the loop,
+    and the check is not repeated for every frame."""
+    from app.api.routes import stream
+    from app.kinematics import ik
+
+    checks, pooled = [], []
+    real_offload = stream.offload
+
+    def chain_ready(*args, **kwargs) -> bool:
+        checks.append(1)
+        return len(checks) > 1  # not built at the first check, built from then on
+
+    async def offload(*args, **kwargs):
+        pooled.append(1)
+        return await real_offload(*args, **kwargs)
+
+    monkeypatch.setattr(ik, "chain_ready", chain_ready)
+    monkeypatch.setattr(stream, "offload", offload)
+    with client.websocket_connect("/robots/ur5/stream") as ws:
+        send(ws, {"id": 0, "op": "fk", "q": Q_UR5})
+        pose = ws.receive_json()["poses"]["tool0"]
+        for i in range(1, 6):
+            ws.send_bytes(
+                np.array([3.0, i, *pose["position"], *pose["orientation"]], "<f8").tobytes()
+            )
+            assert np.frombuffer(ws.receive_bytes(), "<f8")[:3].tolist() == [3.0, i, 1.0]
+    assert (len(pooled), len(checks)) == (1, 2)

@@ -151,6 +151,9 @@ class _Session:
         self.cancel = threading.Event()  # set when the socket ends: stops pooled IK
         #: The answering task waits for the inbox (every earlier answer is sent).
         self.idle = False
+        #: The last plan found to run on the loop with its chain built (a robot model's
+        #: chains are never dropped, so it stays so): spares the check on every frame.
+        self.ready_plan: IKPlan | None = None
 
     # -------------------------------------------------------------------- set-up
     async def run(self) -> None:
@@ -275,9 +278,17 @@ class _Session:
         if raw is None or len(raw) != BINARY_IK_BYTES:
             return False
         plan = self.ik_plan
-        return (
-            plan is not None and plan.inline and ik.chain_ready(self.robot, plan.options)  # type: ignore[arg-type]
-        )
+        return plan is not None and self._on_loop(plan)
+
+    def _on_loop(self, plan: IKPlan) -> bool:
+        """Whether ``plan`` runs on the loop: an inline plan whose chain is built (its first
+        build, the restart table, runs in the pool, never on the loop)."""
+        if plan is self.ready_plan:
+            return True
+        if plan.inline and ik.chain_ready(self.robot, plan.options):  # type: ignore[arg-type]
+            self.ready_plan = plan
+            return True
+        return False
 
     async def _send(self, answer: str | bytes) -> None:
         if isinstance(answer, bytes):
@@ -344,7 +355,7 @@ class _Session:
         """Run ``solve`` on the loop when the plan allows it (and the chain is built: its
         first build, the restart table, runs in the pool, never on the loop), else in the
         pool; a success seeds the socket's next IK."""
-        if plan.inline and ik.chain_ready(self.robot, plan.options):  # type: ignore[arg-type]
+        if self._on_loop(plan):
             res = solve()
         else:
             res = await offload(self.ws, solve, cancel=self.cancel)
