@@ -9,11 +9,15 @@ Printed by ``python -m bench stream`` after its tables:
 - :func:`floors`: what the transports cost with no work, same client and loop: a bare
   uvicorn + Starlette WebSocket echo with the service's uvicorn options, and a raw TCP
   echo (a uvloop ``asyncio.Protocol``, 72-byte messages: the size of a binary IK frame),
-  alternating message by message.
+  alternating message by message; and the same WebSocket echo through each client the
+  service's table uses (the blocking one, the ``websockets`` sync client with its reader
+  thread, the ``websockets`` asyncio client on the standard event loop): what each client
+  adds to a round trip, whatever the server does.
 """
 
 from __future__ import annotations
 
+import asyncio
 import bisect
 import json
 import os
@@ -23,6 +27,8 @@ import time
 
 import numpy as np
 import orjson
+from websockets.asyncio.client import connect as aio_connect
+from websockets.sync.client import connect
 
 from bench._http import serve
 from bench._stream_stamps import SERVER_CODE, STAGES
@@ -123,13 +129,22 @@ def profile(robot_id: str, q: list[float], pose_target: dict, targets: list, n: 
     print(f"| **round trip** | **{np.median(t):.1f}** | **{t.mean():.1f}** |")
 
 
+async def _aio_echo(aws, frame: bytes) -> float:
+    t0 = time.perf_counter_ns()
+    await aws.send(frame)
+    await aws.recv()
+    return (time.perf_counter_ns() - t0) / 1e3
+
+
 def floors(n: int) -> None:
-    """A WebSocket echo through uvicorn + Starlette and a raw TCP echo, same client."""
+    """A WebSocket echo through uvicorn + Starlette and a raw TCP echo, same client; then
+    the WebSocket echo through each of the three clients, alternating."""
     tcp_port = _free_port()
     os.environ["BENCH_TCP_ECHO_PORT"] = str(tcp_port)
     frame = bytes(72)
     ws_us: list[float] = []
     tcp_us: list[float] = []
+    clients: dict[str, list[float]] = {"blocking": [], "websockets sync": [], "asyncio": []}
     try:
         with serve(code=ECHO_CODE) as server:
             port = int(server.url.rsplit(":", 1)[1])
@@ -149,8 +164,27 @@ def floors(n: int) -> None:
                 if i >= 50:
                     ws_us.append((t1 - t0) / 1e3)
                     tcp_us.append((t2 - t1) / 1e3)
-            ws.close()
             tcp.close()
+            url = f"ws://127.0.0.1:{port}/echo"
+            loop = asyncio.new_event_loop()
+            aws = loop.run_until_complete(aio_connect(url, compression=None, proxy=None))
+            with connect(url, compression=None, proxy=None) as sync:
+                for i in range(n + 50):
+                    t0 = time.perf_counter_ns()
+                    ws.send(frame)
+                    ws.recv()
+                    t1 = time.perf_counter_ns()
+                    sync.send(frame)
+                    sync.recv()
+                    t2 = time.perf_counter_ns()
+                    t_aio = loop.run_until_complete(_aio_echo(aws, frame))
+                    if i >= 50:
+                        clients["blocking"].append((t1 - t0) / 1e3)
+                        clients["websockets sync"].append((t2 - t1) / 1e3)
+                        clients["asyncio"].append(t_aio)
+            loop.run_until_complete(aws.close())
+            loop.close()
+            ws.close()
     finally:
         os.environ.pop("BENCH_TCP_ECHO_PORT", None)
     print(f"\nFloors, 72-byte messages one at a time ({n} each, alternating, blocking client)\n")
@@ -160,6 +194,18 @@ def floors(n: int) -> None:
         f"| uvicorn + Starlette WebSocket (the service's uvicorn options) | {_percentiles(ws_us)} |"
     )
     print(f"| raw TCP (uvloop protocol) | {_percentiles(tcp_us)} |")
+    print(f"\nThe same WebSocket echo through each client ({n} each, alternating)\n")
+    print("| client | median / p99 (µs) | over the blocking client (medians, µs) |")
+    print("|---|---:|---:|")
+    base = float(np.median(clients["blocking"]))
+    names = {
+        "blocking": "blocking (`bench._ws`, the calling thread reads)",
+        "websockets sync": "`websockets` sync client (reader thread)",
+        "asyncio": "`websockets` asyncio client (standard event loop)",
+    }
+    for key, us in clients.items():
+        extra = float(np.median(us)) - base
+        print(f"| {names[key]} | {_percentiles(us)} | {extra:+.1f} |")
 
 
 def _free_port() -> int:

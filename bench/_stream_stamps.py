@@ -22,7 +22,7 @@ STAGES = (
     "ASGI receive returned",  # in the stream's reader task
     "answer started",  # the stream's answering task (reader → inbox → answerer)
     "frame decoded",  # parse_binary
-    "target built",  # target_placement
+    "target built",  # pose_se3
     "solve started",  # plan, chain check, call
     "solved",  # the solve (IK)
     "answer encoded",  # binary_ik_answer
@@ -75,7 +75,7 @@ def install() -> None:
     _around(WebSocketsSansIOProtocol, "send", 10, 11)
     _around(stream._Session, "_answer", 3, 9)
     _around(stream, "parse_binary", None, 4)
-    _around(stream, "target_placement", None, 5)
+    _around(stream, "pose_se3", None, 5)
     _around(plan, "_solve_one", 6, 7)
     _around(stream, "binary_ik_answer", None, 8)
 

@@ -6,16 +6,22 @@ within the limits, seed at mid-range, 5 ms per target) solved in the calling thr
 (1 process) and by a warm pool of 2 worker processes, alternating round by round so that
 load hits both alike; and, as the ceiling of the pool on this machine, the same two workers
 given one chunk (half the targets) each, so that the pool's per-chunk overhead is gone and
-only the machine's own scaling over two cores remains. Reported: targets/s (wall clock: the
-work spans processes) per round, the best and the median round, and the speed-up of the
-medians. Worth reading only with the machine otherwise idle: other work on the two cores
-takes from the pool first.
+only the machine's own scaling over two cores remains (and between the two, 4 equal chunks
+per worker: fewer and larger chunks than the pool's guided sizes). Reported: targets/s
+(wall clock: the work spans processes) per round, the best and the median round, and the
+speed-up of the medians. Worth reading only with the machine otherwise idle: other work on
+the two cores takes from the pool first.
 
 Then the per-target cost of carrying answers between a worker and the server, before
 (each chunk's list of :class:`~app.kinematics.ik.IKResult` pickled in the worker, unpickled
 and turned into wire entries in the server) and now (each answer written into shared
 columns in the worker, only the failure notes pickled; the server copies the columns out
 and writes the entries from them), on the same solved answers, alternating round by round.
+Then what the machine itself gives two processes, with no pool and no IPC
+(:mod:`bench._machine_ceiling`): the same solver loop over the same targets in two
+independent processes started together (half the targets each) against one doing all, and
+a pure CPU-bound compiled loop the same way, printed beside the pool's speed-up and its
+one-chunk-per-worker ceiling.
 Last, the target line: speed-up of 2 processes over 1 ≥ 1.8× on both robots.
 
 Environment: ``DENAVIT_BENCH_BATCH_N`` (targets per robot, default 4000),
@@ -43,6 +49,7 @@ from app.kinematics.ik.problem import IKOptions
 from app.robots.registry import Registry
 from app.workers import default_processes, ik_batch
 from app.workers.ik_batch import BatchPool
+from bench._machine_ceiling import ceilings
 from bench.bench_ik import BUDGET_MS, targets
 
 #: The issue's target: the speed-up of 2 processes over 1 (medians), on both robots.
@@ -57,19 +64,37 @@ OLD_CHUNK = 256
 CEILING = "2, one chunk each"
 
 
+#: A chunking to compare with the pool's guided one: 4 equal chunks per worker (fewer,
+#: larger chunks than guided scheduling's ~11–20, at the price of a worse balance when
+#: targets' costs differ).
+EQUAL = "2, 4 equal chunks each"
+
+
 @contextlib.contextmanager
-def _one_chunk_per_process() -> Iterator[None]:
+def _equal_chunks(per_process: int) -> Iterator[None]:
     saved = ik_batch.chunk_sizes
 
-    def halves(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
-        size = math.ceil(n / processes)
+    def equal(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
+        size = math.ceil(n / (processes * per_process))
         return [min(size, n - a) for a in range(0, n, size)]
 
-    ik_batch.chunk_sizes = halves
+    ik_batch.chunk_sizes = equal
     try:
         yield
     finally:
         ik_batch.chunk_sizes = saved
+
+
+def _one_chunk_per_process() -> contextlib.AbstractContextManager[None]:
+    return _equal_chunks(1)
+
+
+def _chunking(p: int | str) -> contextlib.AbstractContextManager[None]:
+    if p == CEILING:
+        return _one_chunk_per_process()
+    if p == EQUAL:
+        return _equal_chunks(4)
+    return contextlib.nullcontext()
 
 
 def _cpu_s(pool: BatchPool) -> float:
@@ -88,7 +113,12 @@ def rates(n: int, rounds: int) -> list[tuple]:
     """Rows: robot, processes, targets/s of every round, solved, CPU µs per target of every
     round (the server's and the workers')."""
     reg = Registry()
-    pools: dict[int | str, BatchPool] = {1: BatchPool(1), 2: BatchPool(2), CEILING: BatchPool(2)}
+    pools: dict[int | str, BatchPool] = {
+        1: BatchPool(1),
+        2: BatchPool(2),
+        EQUAL: BatchPool(2),
+        CEILING: BatchPool(2),
+    }
     rows = []
     try:
         for rid, frame in (("panda", "panda_link8"), ("ur5", "tool0")):
@@ -102,8 +132,7 @@ def rates(n: int, rounds: int) -> list[tuple]:
             solved = dict.fromkeys(pools, 0)
             for _ in range(rounds):
                 for p, pool in pools.items():
-                    chunks = _one_chunk_per_process() if p == CEILING else contextlib.nullcontext()
-                    with chunks:
+                    with _chunking(p):
                         c0, t0 = _cpu_s(pool), time.perf_counter()
                         out = pool.solve(robot, goals, task)
                         speed[p].append(n / (time.perf_counter() - t0))
@@ -218,7 +247,8 @@ def main() -> None:
     ratio: dict[str, float] = {}
     cpu1: dict[str, float] = {}
     projected: dict[str, float] = {}
-    for rid, p, speed, solved, cpu in rates(n, rounds):
+    rows = rates(n, rounds)
+    for rid, p, speed, solved, cpu in rows:
         med, cpu_med = float(np.median(speed)), float(np.median(cpu))
         base.setdefault(rid, med)
         cpu1.setdefault(rid, cpu_med)
@@ -231,6 +261,22 @@ def main() -> None:
     print("\nCPU ratio, 2 × CPU per target of 1 process / CPU per target of the pool (server "
           "and workers): the speed-up 2 otherwise idle cores would give with no other loss: "
           + ", ".join(f"{rid} {r:.2f}×" for rid, r in projected.items()))  # fmt: skip
+    pool_ceiling: dict[str, float] = {}
+    for rid, p, speed, _, _ in rows:
+        if p == CEILING:
+            pool_ceiling[rid] = float(np.median(speed)) / base[rid]
+    frames = {"panda": "panda_link8", "ur5": "tool0"}
+    machine = ceilings({rid: (frames[rid], n) for rid in ratio}, rounds)
+    load = os.getloadavg()[0]
+    print(f"\nThe machine's own scaling: no pool, no IPC ({n} targets per robot or 2 units of a "
+          f"compiled loop; {rounds} alternating rounds; load average {load:.1f})\n")  # fmt: skip
+    print("| work | 1 process, wall (s) | 2 processes, wall (s) | speed-up (wall) "
+          "| CPU ratio | the pool: 2 processes / one chunk each |")  # fmt: skip
+    print("|---|---:|---:|---:|---:|---|")
+    for what, one, two, cpu in machine:
+        pool = f"{ratio[what]:.2f}× / {pool_ceiling[what]:.2f}×" if what in ratio else "—"
+        print(f"| {what} (independent processes) | {one:.3f} | {two:.3f} | {one / two:.2f}× "
+              f"| {cpu:.2f}× | {pool} |")  # fmt: skip
     m = min(n, 2000)
     print(f"\nAnswers between a worker and the server, µs per target ({m} answers, medians of "
           f"{max(rounds, 5)} alternating rounds):\n")  # fmt: skip

@@ -15,6 +15,10 @@ transports alternating target by target so load hits them alike:
   calling thread itself (:class:`bench._ws.BlockingWebSocket`): the ``websockets`` sync
   client hands each message over from a background reader thread, ~0.07 ms a round trip
   here, which a servo loop waiting for each answer need not pay;
+- **stream, binary, asyncio client**: the same frames on a third socket, the ``websockets``
+  asyncio client (``websockets.asyncio.client``, the standard library's event loop), each
+  round trip timed inside its coroutine (send, then await the answer), as a servo loop
+  written with asyncio would: no reader thread, the loop's own wake-up instead;
 - **stream, binary, 8 in flight**: the same frames pipelined (the time between answers;
   "median" and "p99" are then of that interval, not of a round trip).
 
@@ -27,12 +31,17 @@ scheduling more than either transport).
 Targets: the stream ≥ 5× HTTP's round trips per second, p99 < 1 ms for the UR5 step; a
 line per run says met or not, for each one-at-a-time binary row.
 
+With ``DENAVIT_BENCH_BASELINE_TREE`` naming a checkout of earlier code, a server of that
+code beside this one's: the same binary frames alternating between the two, one at a time,
+with the blocking and the ``websockets`` sync clients (medians, and the change).
+
 Then where one binary round trip goes, stage by stage, and the floors below the service (a
 bare WebSocket echo and a raw TCP echo, same client): :mod:`bench._stream_profile`.
 """
 
 from __future__ import annotations
 
+import asyncio
 import os
 import statistics
 import time
@@ -40,12 +49,13 @@ import time
 import httpx
 import numpy as np
 import orjson
+from websockets.asyncio.client import connect as aio_connect
 from websockets.sync.client import connect
 
 from bench._http import serve
 from bench._stream_profile import floors, profile
 from bench._ws import BlockingWebSocket
-from bench.bench_ik_http import JSON, ROBOTS, N, pose_target
+from bench.bench_ik_http import JSON, ROBOTS, N, _serve_tree, pose_target
 
 STEP_M = 2e-4
 #: Binary frames with several in flight (the seeding is the server's, so a client may send
@@ -53,7 +63,10 @@ STEP_M = 2e-4
 WINDOW = 8
 PIPELINED = f"stream, binary, {WINDOW} in flight"
 BLOCKING = "stream, binary, blocking client"
-TRANSPORTS = ("HTTP", "stream, JSON", "stream, binary", BLOCKING, PIPELINED)
+ASYNCIO = "stream, binary, asyncio client"
+TRANSPORTS = ("HTTP", "stream, JSON", "stream, binary", BLOCKING, ASYNCIO, PIPELINED)
+#: The one-at-a-time binary rows (each gets its target line).
+ONE_AT_A_TIME = ("stream, binary", BLOCKING, ASYNCIO)
 #: The targets: one-at-a-time stream round trips per second over HTTP's, UR5 p99 (ms).
 TARGET_RATIO, TARGET_P99_MS = 5.0, 1.0
 
@@ -66,9 +79,31 @@ def _targets(pose: dict) -> list[tuple[list[float], list[float]]]:
     return [((p0 + [STEP_M * s, 0.0, 0.0]).tolist(), pose["orientation"]) for s in steps]
 
 
+async def _aio_round(aws, message: bytes | str) -> tuple[float, bytes | str]:
+    """One round trip of the asyncio client, timed inside the coroutine."""
+    t = time.perf_counter()
+    await aws.send(message)
+    reply = await aws.recv()
+    return time.perf_counter() - t, reply
+
+
 def _run(url: str, robot_id: str, q: list[float]) -> dict[str, list[float]]:
     times: dict[str, list[float]] = {name: [] for name in TRANSPORTS}
     ws_url = url.replace("http://", "ws://") + f"/robots/{robot_id}/stream"
+    loop = asyncio.new_event_loop()
+    try:
+        aws = loop.run_until_complete(
+            aio_connect(ws_url, compression=None, proxy=None, open_timeout=60)
+        )
+        try:
+            return _run_on(url, ws_url, robot_id, q, times, loop, aws)
+        finally:
+            loop.run_until_complete(aws.close())
+    finally:
+        loop.close()
+
+
+def _run_on(url, ws_url, robot_id, q, times, loop, aws) -> dict[str, list[float]]:
     with (
         httpx.Client(base_url=url, timeout=120) as http,
         connect(ws_url, compression=None, proxy=None, open_timeout=60) as ws,
@@ -83,6 +118,7 @@ def _run(url: str, robot_id: str, q: list[float]) -> dict[str, list[float]]:
         for sock in (ws, lean):
             sock.send(first.decode())
             assert orjson.loads(sock.recv())["success"]
+        assert orjson.loads(loop.run_until_complete(_aio_round(aws, first.decode()))[1])["success"]
         for _ in range(50):  # warm-up
             http.post(f"/robots/{robot_id}/ik", json={"target": pose_target(pose)})
         for i, (p, o) in enumerate(targets):
@@ -112,6 +148,10 @@ def _run(url: str, robot_id: str, q: list[float]) -> dict[str, list[float]]:
             reply = lean.recv()
             times[BLOCKING].append(time.perf_counter() - t)
             assert isinstance(reply, bytes), reply
+
+            dt, reply = loop.run_until_complete(_aio_round(aws, frame))
+            times[ASYNCIO].append(dt)
+            assert isinstance(reply, bytes), reply
         lean.close()
         times[PIPELINED] = _pipelined(ws, targets)
     return times
@@ -135,6 +175,48 @@ def _pipelined(ws, targets: list[tuple[list[float], list[float]]]) -> list[float
     return out
 
 
+def _against_baseline(tree: str, poses: dict[str, dict]) -> None:
+    """Binary frames one at a time, alternating between this code's server and ``tree``'s,
+    through the blocking and the ``websockets`` sync clients: medians (ms)."""
+    rows = []
+    with _serve_tree(None) as new, _serve_tree(tree) as old:
+        for robot_id, q in ROBOTS.items():
+            pose = next(iter(poses[robot_id]["poses"].values()))
+            first = orjson.dumps({"id": 0, "op": "ik", "seed": q, "target": pose_target(pose)})
+            socks = {}
+            for who, server in (("baseline", old), ("this code", new)):
+                port = int(server.url.rsplit(":", 1)[1])
+                path = f"/robots/{robot_id}/stream"
+                ws_url = server.url.replace("http://", "ws://") + path
+                socks[who, "blocking"] = BlockingWebSocket("127.0.0.1", port, path)
+                socks[who, "websockets sync"] = connect(ws_url, compression=None, proxy=None)
+            for sock in socks.values():
+                sock.send(first.decode())
+                assert orjson.loads(sock.recv())["success"]
+            times: dict[tuple[str, str], list[float]] = {k: [] for k in socks}
+            for i, (p, o) in enumerate(_targets(pose)):
+                frame = np.array([3.0, float(i), *p, *o], "<f8").tobytes()
+                for key, sock in socks.items():
+                    t = time.perf_counter()
+                    sock.send(frame)
+                    reply = sock.recv()
+                    if i >= 50:
+                        times[key].append(time.perf_counter() - t)
+                    assert isinstance(reply, bytes), reply
+            for sock in socks.values():
+                sock.close()
+            for client in ("blocking", "websockets sync"):
+                a = statistics.median(times["baseline", client]) * 1e3
+                b = statistics.median(times["this code", client]) * 1e3
+                rows.append((robot_id, client, a, b))
+    print(f"\nBinary IK frames one at a time, this code against {tree} (alternating frame by "
+          f"frame, not pinned; load average {os.getloadavg()[0]:.1f})\n")  # fmt: skip
+    print("| robot | client | baseline median (ms) | this code median (ms) | change |")
+    print("|---|---|---:|---:|---:|")
+    for robot_id, client, a, b in rows:
+        print(f"| {robot_id} | {client} | {a:.3f} | {b:.3f} | {(b - a) * 1e3:+.1f} µs |")
+
+
 def _pin(pids: list[int], cpu: int) -> None:
     """Every thread of ``pids`` onto ``cpu``."""
     for pid in pids:
@@ -148,6 +230,9 @@ def main() -> None:
         _table(pinned, cpus)
     with serve(workers="1") as server, httpx.Client(base_url=server.url) as http:
         poses = {r: http.post(f"/robots/{r}/fk", json={"q": q}).json() for r, q in ROBOTS.items()}
+    tree = os.environ.get("DENAVIT_BENCH_BASELINE_TREE")
+    if tree:
+        _against_baseline(tree, poses)
     for robot_id, q in ROBOTS.items():
         pose = next(iter(poses[robot_id]["poses"].values()))
         profile(robot_id, q, pose_target(pose), _targets(pose), min(N, 2000))
@@ -188,7 +273,7 @@ def _table(pinned: bool, cpus: list[int]) -> None:
     print()
     for robot_id, times in results.items():
         http_rate = 1.0 / statistics.fmean(times["HTTP"])
-        for name in ("stream, binary", BLOCKING):
+        for name in ONE_AT_A_TIME:
             t = np.array(times[name]) * 1e3
             ratio, p99 = 1e3 / t.mean() / http_rate, np.percentile(t, 99)
             line = (f"target ({where}), {robot_id}, {name}: ≥ {TARGET_RATIO:g}× HTTP's round "

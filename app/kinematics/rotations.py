@@ -54,7 +54,7 @@ def unit_quaternion(quat: np.ndarray | list[float], field: str) -> np.ndarray:
     if arr.shape != (4,):
         return unit_quaternions(arr, field)[0]
     x, y, z, w = arr.tolist()
-    norm = _norm(x, y, z, w)
+    norm = quaternion_norm(x, y, z, w)
     if not abs(norm - 1.0) <= QUATERNION_NORM_TOLERANCE:  # NaN fails too
         raise InvalidInputError(_norm_reason(norm), field.format(0))
     return np.array((x / norm, y / norm, z / norm, w / norm))
@@ -126,22 +126,33 @@ def quaternion_to_matrix(quat: np.ndarray) -> np.ndarray:
     return R
 
 
-def _norm(x: float, y: float, z: float, w: float) -> float:
+def quaternion_norm(x: float, y: float, z: float, w: float) -> float:
     """‖(x, y, z, w)‖ summed in NumPy's order for 4 values (bit for bit ``np.linalg.norm``
     along an axis); inf when a square overflows."""
     return math.sqrt(x * x + y * y + z * z + w * w)
 
 
-def _quaternion_to_matrix_one(x: float, y: float, z: float, w: float) -> np.ndarray:
-    n = _norm(x, y, z, w)
+def quaternion_entries(x: float, y: float, z: float, w: float) -> tuple[float, ...]:
+    """The rotation matrix of the quaternion [x, y, z, w] (normalised here) as its 9 entries,
+    row-major: :func:`quaternion_to_matrix`'s formula for one quaternion, in Python floats
+    (for callers that build a larger array from them: :func:`.placement.pose_se3`)."""
+    n = quaternion_norm(x, y, z, w)
     x, y, z, w = x / n, y / n, z / n, w / n
-    return np.array(
-        (
-            (1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)),
-            (2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)),
-            (2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)),
-        )
+    return (
+        1 - 2 * (y * y + z * z),
+        2 * (x * y - z * w),
+        2 * (x * z + y * w),
+        2 * (x * y + z * w),
+        1 - 2 * (x * x + z * z),
+        2 * (y * z - x * w),
+        2 * (x * z - y * w),
+        2 * (y * z + x * w),
+        1 - 2 * (x * x + y * y),
     )
+
+
+def _quaternion_to_matrix_one(x: float, y: float, z: float, w: float) -> np.ndarray:
+    return np.array(quaternion_entries(x, y, z, w)).reshape(3, 3)
 
 
 def matrix_to_rpy(R: np.ndarray) -> np.ndarray:

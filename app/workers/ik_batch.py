@@ -61,6 +61,7 @@ from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from multiprocessing import shared_memory
 
+import numpy as np
 import pinocchio as pin
 
 from app.kinematics.errors import Cancelled, UnavailableError
@@ -364,22 +365,25 @@ class BatchPool:
         matrices, answers = BatchAnswers.on_buffer(
             segment.buf, len(targets), len(robot.joint_names)
         )
-        for i, T in enumerate(targets):
-            matrices[i] = T.homogeneous
-        self._run(robot, rows, answers, task, cancel, record)
+        self._run(robot, rows, targets, matrices, answers, task, cancel, record)
         return answers.copy()
 
     def _run(
         self,
         robot: RobotModel,
         rows: tuple[str, int, int, tuple[int, int], str],
+        targets: Sequence[pin.SE3],
+        matrices: np.ndarray,
         answers: BatchAnswers,
         task: BatchTask,
         cancel: threading.Event | None,
         record: Callable[[bool], None] | None,
     ) -> None:
         """Hand the rows of ``answers`` (in the segment of ``rows``) out in chunks, wait for
-        each in order and collect the rows' notes and timings."""
+        each in order and collect the rows' notes and timings. A chunk's targets are
+        written into ``matrices`` just before it is submitted, so the workers solve the
+        first chunks while the later ones are written (the writing, ~1 µs a target, is
+        then no longer all before the first solve)."""
         n = len(answers)
         key = self._cost_key(robot, task)
         sizes = chunk_sizes(n, self.processes, self.cost_us(robot, task), task.options.timeout_ms)
@@ -388,6 +392,8 @@ class BatchPool:
         try:
             start = 0
             for size in sizes:
+                stop = start + size
+                matrices[start:stop] = np.array([T.homogeneous for T in targets[start:stop]])
                 try:
                     fut = executor.submit(_worker_chunk, (*rows, start, start + size), task)
                 except BrokenProcessPool:

@@ -399,3 +399,108 @@ def test_collision_aware_ik_runs_as_over_http(client, registry) -> None:
         got = np.frombuffer(ws.receive_bytes(), "<f8")
         assert got[:3].tolist() == [3.0, 2.0, 1.0]
         assert got[3:-2].tolist() == ans["q"]
+
+
+def test_a_binary_frame_read_while_an_answer_is_sent_waits_for_it(stream_app, monkeypatch) -> None:
+    """Raw ASGI: binary ik frames, the first answer's send held (the client reads slowly):
+    the frames read meanwhile are answered after it, in order. (A frame that comes while
+    nothing is being answered is answered by the reader itself; one that comes while an
+    answer is pending must not overtake it.)"""
+    from app.kinematics import ik
+
+    monkeypatch.setattr(ik, "chain_ready", lambda *a, **k: True)  # solved on the loop
+    app = stream_app()
+    pose = [0.4, 0.1, 0.3, 0.0, 0.0, 0.0, 1.0]
+    frames = [np.array([3.0, float(i), *pose], "<f8").tobytes() for i in range(1, 5)]
+    received, done = [], []
+    finished = asyncio.Event()
+
+    async def receive() -> dict:
+        if not received:
+            received.append("connect")
+            return {"type": "websocket.connect"}
+        if len(received) <= len(frames):
+            received.append("frame")
+            return {"type": "websocket.receive", "bytes": frames[len(received) - 2]}
+        await finished.wait()
+        return {"type": "websocket.disconnect", "code": 1000}
+
+    async def send_(message: dict) -> None:
+        if message["type"] != "websocket.send":
+            return
+        answer = np.frombuffer(message["bytes"], "<f8")
+        if answer[1] == 1.0:
+            for _ in range(1000):  # the first answer's send is slow: the reader reads on
+                await asyncio.sleep(0)
+        done.append(answer[1])
+        if len(done) == len(frames):
+            finished.set()
+
+    scope = {"type": "websocket", "path": "/robots/ur5/stream", "raw_path": b"/robots/ur5/stream",
+             "root_path": "", "query_string": b"", "headers": [], "scheme": "ws",
+             "client": ("127.0.0.1", 1), "server": ("127.0.0.1", 80), "subprotocols": [],
+             "asgi": {"version": "3.0"}, "state": {}}  # fmt: skip
+
+    asyncio.run(asyncio.wait_for(app(scope, receive, send_), timeout=120))
+    assert received.count("frame") == len(frames)
+    assert done == [1.0, 2.0, 3.0, 4.0]
+
+
+def test_one_binary_frame_at_a_time_is_answered_by_the_reader(client, monkeypatch) -> None:
+    """A servo loop's binary ik frames, one at a time, once the first has made the socket's
+    plan: answered by the reading task itself (no hop), with the answers of the HTTP route
+    seeded the same way (bit for bit)."""
+    from app.api.routes import stream
+
+    seen = []
+    real = stream._Session._answered_inline
+
+    def spy(self, message):
+        seen.append(real(self, message))
+        return seen[-1]
+
+    monkeypatch.setattr(stream._Session, "_answered_inline", spy)
+    with client.websocket_connect("/robots/ur5/stream") as ws:
+        send(ws, {"id": 0, "op": "fk", "q": Q_UR5})
+        pose = ws.receive_json()["poses"]["tool0"]
+        seed = Q_UR5
+        for i in range(1, 6):
+            position = (np.array(pose["position"]) + [0.002 * i, 0.0, 0.0]).tolist()
+            ws.send_bytes(np.array([3.0, i, *position, *pose["orientation"]], "<f8").tobytes())
+            got = np.frombuffer(ws.receive_bytes(), "<f8").tolist()
+            target = {"position": position, "orientation": pose["orientation"]}
+            ref = client.post("/robots/ur5/ik", json={"target": target, "seed": seed}).json()
+            assert got == [3.0, i, 1.0, *ref["q"], ref["position_error"], ref["orientation_error"]]
+            seed = ref["q"]
+    assert seen[:2] == [False, False] and all(seen[2:]) and len(seen) == 6, seen  # fk, first
+
+
+def test_a_binary_frame_whose_chain_is_not_built_is_solved_in_the_pool(client, monkeypatch) -> None:
+    """While the chain of the socket's plan is not built (its first build, tens of ms, must
+    not stall the loop) a binary ik frame is solved in the pool; once it is, on the loop,
+    and the check is not repeated for every frame."""
+    from app.api.routes import stream
+    from app.kinematics import ik
+
+    checks, pooled = [], []
+    real_offload = stream.offload
+
+    def chain_ready(*args, **kwargs) -> bool:
+        checks.append(1)
+        return len(checks) > 1  # not built at the first check, built from then on
+
+    async def offload(*args, **kwargs):
+        pooled.append(1)
+        return await real_offload(*args, **kwargs)
+
+    monkeypatch.setattr(ik, "chain_ready", chain_ready)
+    monkeypatch.setattr(stream, "offload", offload)
+    with client.websocket_connect("/robots/ur5/stream") as ws:
+        send(ws, {"id": 0, "op": "fk", "q": Q_UR5})
+        pose = ws.receive_json()["poses"]["tool0"]
+        for i in range(1, 6):
+            ws.send_bytes(
+                np.array([3.0, i, *pose["position"], *pose["orientation"]], "<f8").tobytes()
+            )
+            assert np.frombuffer(ws.receive_bytes(), "<f8")[:3].tolist() == [3.0, i, 1.0]
+    assert (len(pooled), len(checks)) == (1, 2)

@@ -111,3 +111,25 @@ def test_a_bad_binary_ik_frame_gets_an_error_naming_the_field(client, frame, fie
         ws.send_bytes(np.array(good, "<f8").tobytes())
         answer = np.frombuffer(ws.receive_bytes(), "<f8")
         assert answer[:3].tolist() == [3.0, 2.0, 1.0]
+
+
+@pytest.mark.parametrize(
+    ("code", "msg_id", "field"),
+    [(3.0, np.nan, "id"), (3.0, np.inf, "id"), (3.0, -np.inf, "id"), (5.0, 1.0, "op")],
+)
+def test_a_bad_nine_float_frame_is_refused(code, msg_id, field) -> None:
+    """Frames of 9 floats (the size of an ik frame) with an id JSON cannot echo, or an
+    unknown op code: the error names ``id`` or ``op``."""
+    data = np.array([code, msg_id, 0.4, 0.1, 0.3, 0.0, 0.0, 0.0, 1.0], "<f8").tobytes()
+    with pytest.raises(StreamMessageError) as exc:
+        parse_binary(data, "ur5", "/robots/ur5/stream")
+    assert exc.value.problem["field"] == field, exc.value.problem
+    assert exc.value.problem["status"] == 422
+
+
+def test_a_seven_joint_fk_frame_is_an_fk_frame() -> None:
+    """9 floats with op code 1 (a 7-joint arm's fk frame) is fk with its q, not an ik frame."""
+    q = [0.1, -0.2, 0.3, -1.4, 0.5, 1.6, 0.7]
+    message = parse_binary(np.array([1.0, 4.0, *q], "<f8").tobytes(), "panda", "/s")
+    assert (message.op, message.msg_id, message.pose) == ("fk", 4.0, None)
+    assert message.body.q == q  # type: ignore[union-attr]

@@ -38,6 +38,10 @@ _OPS_TEXT = "fk, jacobian or ik"
 #: Floats of a binary IK target: position [x, y, z] (m), quaternion [x, y, z, w].
 POSE_FLOATS = 7
 LITTLE_F8 = np.dtype("<f8")
+IK_CODE = float(OP_CODES["ik"])
+#: A binary ik frame: [3, id, x, y, z, qx, qy, qz, qw].
+_IK_FRAME = struct.Struct(f"<{2 + POSE_FLOATS}d")
+BINARY_IK_BYTES = _IK_FRAME.size
 
 
 class StreamMessageError(Exception):
@@ -135,6 +139,10 @@ def parse_binary(data: bytes, robot_id: str, stream_path: str) -> Message:
     the core when solved; its other options are those of the socket's last valid JSON ik
     message). The id must be finite: a NaN or infinite id is an error naming ``id`` (the
     JSON answers could not echo it)."""
+    if len(data) == _IK_FRAME.size:  # the servo loop's frame: one unpack, no copies
+        code, msg_id, *pose = _IK_FRAME.unpack(data)
+        if code == IK_CODE and math.isfinite(msg_id):
+            return Message(msg_id, "ik", None, binary=True, pose=pose)
     if len(data) % 8 or len(data) < 16:
         raise _invalid(
             "message",
