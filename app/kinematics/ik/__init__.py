@@ -122,6 +122,7 @@ from app.kinematics.ik.problem import (
 )
 from app.kinematics.ik.ranking import check_rank_by
 from app.kinematics.ik.search import Clock, IKResult, Search
+from app.kinematics.ik.single import applies, solve_single
 from app.kinematics.ik.version import SOLVER_VERSION
 from app.kinematics.models import RobotModel
 
@@ -221,6 +222,13 @@ def solve(
         raise Cancelled()
     check_rank_by(options.rank_by, clearance)
     task = options.task()
+    if applies(ch, options, task, accept, rng, clearance):
+        res = solve_single(
+            robot, ch, target, options, task, q_seed, t_start=t_start, deadline=deadline,
+            clock=clock, cancel=cancel, annotate=annotate,
+        )  # fmt: skip
+        if res is not None:
+            return res
     problem = IKProblem(robot, ch, target, q_seed, options, task)
     search = Search(
         problem,

@@ -15,7 +15,7 @@ import threading
 from collections.abc import Callable
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import annotate, kernel, search_kernel
+from app.kinematics.ik import annotate, kernel, query_kernel, search_kernel
 from app.kinematics.jit import available
 
 _LOCK = threading.Lock()
@@ -58,6 +58,7 @@ def warm_up() -> None:
         search_kernel.warm_up()
         analytic_ik.warm_up()
         annotate.warm_up()
+        query_kernel.warm_up()
         for warm in _CALLERS:
             warm()
         _warmed = True  # only now: every kernel is ready
