@@ -167,8 +167,15 @@ def query(  # pragma: no cover
 
 
 def entry():
-    """:func:`query`'s compiled entry point (:func:`app.kinematics.jit.direct`)."""
-    return direct(query, *_example())
+    """:func:`query`'s compiled entry point (:func:`app.kinematics.jit.direct`), found once
+    per process."""
+    global _ENTRY
+    if _ENTRY is None:
+        _ENTRY = direct(query, *_example())
+    return _ENTRY
+
+
+_ENTRY = None
 
 
 def _example() -> tuple:
