@@ -19,6 +19,7 @@ from app.kinematics.ik.kernel import CONVERGED
 from app.kinematics.ik.parameters import DEFAULT_PARAMETERS
 from app.kinematics.ik.precompute import ik_chain
 from app.kinematics.ik.problem import IKOptions
+from app.kinematics.ik.query_kernel import ANALYTIC
 from tests.kinematics.reference import TOL, pose_error, reference_pose, se3
 
 pytestmark = pytest.mark.skipif(not jit.available(), reason="Numba not installed")
@@ -27,6 +28,7 @@ pytestmark = pytest.mark.skipif(not jit.available(), reason="Numba not installed
 ARMS = [
     ("panda", "panda_link8"),
     ("ur5", "tool0"),
+    ("ur5_dh", None),
     ("puma560", None),
     ("stanford_arm", None),
 ]
@@ -174,14 +176,18 @@ def test_iteration_cap_fails_alike(registry, monkeypatch, robot_id: str, frame: 
         _assert_same(fast, general)
 
 
-@pytest.mark.parametrize(("robot_id", "frame"), [("panda", "panda_link8"), ("ur5", "tool0")])
+@pytest.mark.parametrize(
+    ("robot_id", "frame", "analytic"),
+    [("panda", "panda_link8", False), ("ur5", "tool0", False), ("ur5", "tool0", True)],
+)
 @pytest.mark.parametrize("joint", [0, 2])
 def test_a_lying_kernel_is_caught_by_pinocchio(
-    registry, monkeypatch, robot_id: str, frame: str, joint: int
+    registry, monkeypatch, robot_id: str, frame: str, analytic: bool, joint: int
 ) -> None:
-    """The compiled query reports CONVERGED with a configuration 0.01 rad off on one joint:
-    Pinocchio's check refuses it, the fast path never answers it, and the query is answered
-    by the general path (a verified solution, held against yourdfpy)."""
+    """The compiled query reports a converged iterate (or the UR closed form's candidate)
+    0.01 rad off on one joint: Pinocchio's check refuses it, the fast path never answers it,
+    and the query is answered by the general path (a verified solution, held against
+    yourdfpy)."""
     robot = registry.get(robot_id)
     ch = ik_chain(robot, frame)
     k = ch.k
@@ -190,13 +196,13 @@ def test_a_lying_kernel_is_caught_by_pinocchio(
 
     def lying(*args):
         outcome = real(*args)
-        if outcome == CONVERGED:
-            args[4][joint] += 0.01  # sf[:k] holds the converged iterate
-            lies.append(args[4][:k].copy())
+        if outcome in (CONVERGED, ANALYTIC):
+            args[5][joint] += 0.01  # sf[:k] holds the answer
+            lies.append(args[5][:k].copy())
         return outcome
 
     monkeypatch.setattr(single, "entry", lambda: lying)
-    options = IKOptions(frame=frame, tolerance=(TOL, TOL), analytic=False, timeout_ms=50.0)
+    options = IKOptions(frame=frame, tolerance=(TOL, TOL), analytic=analytic, timeout_ms=50.0)
     for target in _targets(robot, ch, 20, seed=3):
         fast, general, answered = _both(monkeypatch, robot, target, options)
         assert answered == [False]  # refused: the general path answered
@@ -285,3 +291,16 @@ def test_a_poisoned_idle_state_gives_the_general_answers(
             fast, general, answered = _both(monkeypatch, robot, target, options, seed=s)
             assert answered == [True]
             _assert_same(fast, general)
+
+
+@pytest.mark.parametrize("x", [0.95, 1.0])
+def test_a_closed_form_without_candidates_searches_alike(registry, monkeypatch, x: float) -> None:
+    """A UR5 target inside the reach bound that the closed form proves out of reach (no
+    candidate): both paths search on (``analytic+numeric``) and fail alike on a fake clock."""
+    robot = registry.get("ur5")
+    target = se3(np.block([[np.eye(3), np.array([[x], [0.0], [0.3]])], [np.zeros((1, 3)), 1.0]]))
+    options = IKOptions(frame="tool0", timeout_ms=5.0)
+    fast, general, answered = _both(monkeypatch, robot, target, options)
+    assert answered == [True]
+    assert fast.method == "analytic+numeric" and not fast.success
+    _assert_same(fast, general)

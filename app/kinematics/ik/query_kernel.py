@@ -23,6 +23,11 @@ parameters damp, mu, gain, null_scale, null_floor, max_step, progress
 kind, elbow, tip_axis4, then prism (k,), cont (k,) as 0/1 and the active joints' wire
 indices (k,).
 
+``ur`` (float64): the chain's compiled UR closed form
+(:attr:`app.kinematics.analytic_ik.ur.URType.consts`: w (6, 3), p (6, 3), h (3,), s (6,),
+c0 (3,), the frame's rotation (3, 3) and position (3,) at zero, the arm's origin, u, v (3,)
+each, r1, r2 (2,) each, sign2), empty when the chain has none.
+
 State ``sf`` (float64): qa (k,), q_ref (k,), best_q (k,), best (1,), then the answer's
 branch code and manipulability (2,); ``d`` (N,) float32: the table distances; ``si``
 (int64): the :data:`~.boundary.COUNTERS` then the nearest samples (n_near,).
@@ -34,6 +39,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
+from app.kinematics.analytic_ik import ur as ur_form
 from app.kinematics.ik import annotate, search_kernel
 from app.kinematics.ik.boundary import (
     COUNTERS,
@@ -50,19 +56,23 @@ if TYPE_CHECKING:
     from app.kinematics.ik.precompute import IKChain
 
 _NC = len(COUNTERS)
+#: Outcomes of :func:`query` besides :func:`~.search_kernel.search`'s: the first closed-form
+#: candidate is in ``sf[:k]`` (annotated); the closed form has no candidate (search next).
+ANALYTIC, NO_CANDIDATE = 5, 6
 #: Fixed entries of ``g`` before the per-joint ones.
 _G0 = 10
 
 
 class QueryConstants(NamedTuple):
     """One chain's packed constants (module doc): ``f``, ``g``, the restart table (N, k)
-    float64 and its poses ``tab32`` (13, N) float32; ``k`` joints, ``n_near`` nearest
-    samples ranked."""
+    float64 and its poses ``tab32`` (13, N) float32, ``ur`` (the compiled UR closed form,
+    empty without one); ``k`` joints, ``n_near`` nearest samples ranked."""
 
     f: np.ndarray
     g: np.ndarray
     table: np.ndarray
     tab32: np.ndarray
+    ur: np.ndarray
     k: int
     n_near: int
 
@@ -93,7 +103,13 @@ def pack(ch: IKChain) -> QueryConstants | None:
     g = np.concatenate([np.array(head, dtype=np.int64), c.prism, c.cont, ch.active])
     g = np.ascontiguousarray(g, dtype=np.int64)
     n_near = min(ch.parameters.nearest, sc.table.shape[0])
-    return QueryConstants(np.ascontiguousarray(f), g, sc.table, sc.tab32, k, n_near)
+    geo = ch.closed_form[0]
+    ur = np.zeros(0)
+    if geo is not None:
+        ur = np.concatenate([np.ravel(np.asarray(x, dtype=np.float64)) for x in geo.consts])
+    return QueryConstants(
+        np.ascontiguousarray(f), g, sc.table, sc.tab32, np.ascontiguousarray(ur), k, n_near
+    )
 
 
 def new_query_state(qc: QueryConstants) -> QueryState:
@@ -106,11 +122,17 @@ def new_query_state(qc: QueryConstants) -> QueryState:
 
 @jit
 def query(  # pragma: no cover
-    f, g, table, tab32, sf, d, si, q_seed, fresh, H, tol_p2, tol_r2, cap, chunk
+    f, g, table, tab32, ur, sf, d, si, q_seed, fresh, analytic, H, tol_p2, tol_r2, cap, chunk
 ):
     """Run the search for at most ``chunk`` attempts; on ``CONVERGED`` also write the branch
     code and manipulability at the converged iterate ``sf[:k]`` into ``sf[3k + 1]``,
     ``sf[3k + 2]``. Restarts past the nearest samples come from the table in order.
+
+    With ``fresh`` and ``analytic`` and a closed form (``ur`` not empty), the closed form
+    runs instead of the search (:func:`app.kinematics.analytic_ik.ur.ur_candidates_compiled`:
+    its candidates in its order, moved into the limits nearest the seed): the first one is
+    written into ``sf[:k]`` and annotated (``ANALYTIC``), or there is none
+    (``NO_CANDIDATE``: the state is the fresh one, the caller searches next).
 
     ``fresh``: the query's first call: the state is reset from the wire seed ``q_seed``
     (n,) (the active joints' values start the search; best energy ∞; counters 0), as
@@ -155,15 +177,47 @@ def query(  # pragma: no cover
         for i in range(_NC):
             counters[i] = 0
         counters[N_NEAR] = si.shape[0] - _NC
-    state = SearchState(qa, sf[k : 2 * k], sf[2 * k : 3 * k], best, d, si[_NC:], counters)
-    outcome = search_kernel.search(state, consts, H, tol_p2, tol_r2, cap, chunk, True)
-    if outcome == CONVERGED:
+    if fresh and analytic and ur.shape[0] > 0:
+        outcome = _closed_form(ur, H, lo, hi, qa)
+        if outcome == NO_CANDIDATE:
+            return outcome
+    else:
+        state = SearchState(qa, sf[k : 2 * k], sf[2 * k : 3 * k], best, d, si[_NC:], counters)
+        outcome = search_kernel.search(state, consts, H, tol_p2, tol_r2, cap, chunk, True)
+    if outcome == CONVERGED or outcome == ANALYTIC:
         code, w = annotate.annotation(
             qa, C, t, prism, last_C, last_t, g[6] != 0, g[7], g[8] != 0, g[9] != 0, wrist
         )
         sf[3 * k + 1] = code
         sf[3 * k + 2] = w
     return outcome
+
+
+@jit
+def _closed_form(ur, H, lo, hi, qa):  # pragma: no cover
+    """The UR closed form's first candidate for the target ``H`` into ``qa`` (the seed on
+    entry) and ``ANALYTIC``, or ``NO_CANDIDATE`` (``qa`` untouched)."""
+    w = ur[0:18].reshape((6, 3))
+    p = ur[18:36].reshape((6, 3))
+    MR = ur[48:57].reshape((3, 3))
+    Rt = np.empty((3, 3))
+    pt = np.empty(3)
+    for i in range(3):
+        pt[i] = H[i, 3]
+        for j in range(3):
+            Rt[i, j] = H[i, j]
+    seed = qa.copy()
+    out = np.empty((8, 6))
+    n = ur_form._ur_all(
+        w, p, ur[36:39], ur[39:45], ur[45:48], MR, ur[57:60], ur[60:63], ur[63:66],
+        ur[66:69], ur[69:71], ur[71:73], ur[73], Rt, pt, seed, out,
+    )  # fmt: skip
+    ur_form._into_limits_nb(out, n, lo, hi, seed)
+    if n == 0:
+        return NO_CANDIDATE
+    for i in range(6):
+        qa[i] = out[0, i]
+    return ANALYTIC
 
 
 def entry():
@@ -193,7 +247,9 @@ def _example() -> tuple:
     table = np.zeros((n, k))
     tab32 = np.zeros((13, n), dtype=np.float32)
     sf, d, si = np.zeros(3 * k + 3), np.empty(n, np.float32), np.zeros(_NC + 4, np.int64)
-    return (f, g, table, tab32, sf, d, si, np.zeros(1), True, np.eye(4), 1e-10, 1e-10, 1, 1)
+    ur = np.zeros(0)
+    return (f, g, table, tab32, ur, sf, d, si, np.zeros(1), True, True, np.eye(4), 1e-10, 1e-10,
+            1, 1)  # fmt: skip
 
 
 def warm_up() -> None:

@@ -7,11 +7,12 @@ three quarters of its served time in Python around the compiled search: the quer
 verification and the ranking's bookkeeping. Here the same query is
 
 1. the unreachable check (:func:`~.failure.unreachable_detail`, in Python: a few floats);
-2. the closed-form candidates where the chain has them (as :func:`~.solve`), each checked
-   by :func:`verify`, the first that passes answered;
-3. else :func:`.query_kernel.query`: the compiled search and, at the converged iterate,
-   the branch code and manipulability, in one call per chunk of attempts (the clock and the
-   cancel flag are read between chunks, as :func:`.compiled.run_compiled` does);
+2. :func:`.query_kernel.query`: the compiled UR closed form where the chain has one (its
+   first candidate, as :func:`~.solve` offers them) or else the compiled search, and the
+   branch code and manipulability of the answered configuration, in one call per chunk of
+   attempts (the clock and the cancel flag are read between chunks, as
+   :func:`.compiled.run_compiled` does); other closed forms (the planar 2-link arm) run in
+   Python first, as in :func:`~.solve`;
 4. :func:`verify`: Pinocchio's independent check of the answered configuration (the wire
    configuration within the joint limits, ``forwardKinematics`` + ``updateFramePlacement``
    on this thread's Data, the pose error against the target within the tolerances), exactly
@@ -44,7 +45,13 @@ from app.kinematics.ik.boundary import ITERATIONS, RESTARTS
 from app.kinematics.ik.failure import unreachable_detail
 from app.kinematics.ik.kernel import CAPPED, CONVERGED
 from app.kinematics.ik.problem import IKProblem
-from app.kinematics.ik.query_kernel import QueryState, entry, new_query_state
+from app.kinematics.ik.query_kernel import (
+    ANALYTIC,
+    NO_CANDIDATE,
+    QueryState,
+    entry,
+    new_query_state,
+)
 from app.kinematics.ik.search import IKResult, IKSolution, Search
 
 if TYPE_CHECKING:
@@ -121,7 +128,9 @@ def solve_single(
     tol_p, tol_r = float(options.tolerance[0]), float(options.tolerance[1])
     if unreachable_detail(robot, ch, q_seed, target, task, tol_p) is not None:
         return None
-    if options.analytic:
+    if options.analytic and ch.query_constants.ur.size:
+        method = "analytic"  # the UR closed form, compiled with the search (query_kernel)
+    elif options.analytic:
         from app.kinematics.analytic_ik import candidates
 
         cands = candidates(robot, ch, target, options.mode, q_seed)
@@ -155,19 +164,33 @@ def _search(
     H = np.ascontiguousarray(target.homogeneous, dtype=np.float64)
     cap = options.max_iterations if options.max_iterations is not None else 1 << 62
     chunk_attempts = ch.parameters.chunk_attempts
-    # the first attempt runs even when the budget is already spent (as run_compiled)
-    chunk = 1 if clock() >= deadline else chunk_attempts
+    analytic = method == "analytic"
+    # the first attempt runs even when the budget is already spent (as run_compiled); the
+    # closed form first, before the clock is read (as solve)
+    chunk = 0 if analytic else (1 if clock() >= deadline else chunk_attempts)
     run = entry()
-    f, g, table, tab32 = qc.f, qc.g, qc.table, qc.tab32
+    f, g, table, tab32, ur = qc.f, qc.g, qc.table, qc.tab32, qc.ur
     tol_p2, tol_r2 = tol_p**2, tol_r**2
     timed_out = False
     fresh = True
     try:
         while True:
-            outcome = run(f, g, table, tab32, sf, d, si, q_seed, fresh, H, tol_p2, tol_r2, cap,
-                          chunk)  # fmt: skip
+            outcome = run(f, g, table, tab32, ur, sf, d, si, q_seed, fresh, analytic, H, tol_p2,
+                          tol_r2, cap, chunk)  # fmt: skip
             fresh = False
             chunk = chunk_attempts
+            if outcome == ANALYTIC:
+                qa = sf[:k].copy()
+                checked = verify(robot, ch, q_seed, qa, target, tol_p, tol_r)
+                if checked is None:
+                    return None  # the general path goes on with what it learnt
+                code, w = float(sf[3 * k + 1]), float(sf[3 * k + 2])
+                return _success(robot, ch, checked, q_seed, qa, (code, w), annotate, 0, 0,
+                                method, (clock() - t_start) * 1e3)  # fmt: skip
+            if outcome == NO_CANDIDATE:  # the closed form proves nothing: search
+                method, analytic = "analytic+numeric", False
+                chunk = 1 if clock() >= deadline else chunk_attempts
+                continue
             if outcome == CAPPED:
                 break
             if outcome == CONVERGED:
