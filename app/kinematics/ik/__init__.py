@@ -13,6 +13,9 @@ The package, one concept per module:
 - :mod:`.kernel`, :mod:`.search_kernel`: the compiled attempt and the compiled whole search
   (Numba), and the named tuples they take;
 - :mod:`.compiled`: the driver of the compiled search, full pose only;
+- :mod:`.single`, :mod:`.query_kernel`: the fast path when one solution nearest the seed is
+  wanted (the HTTP default): the closed form or the search and the answer's annotation in
+  one compiled call per chunk, one Pinocchio check, the general path's answers;
 - :mod:`.annotate`: an answer's branch label and manipulability in compiled code;
 - :mod:`.joint_frames`: the chain's joint frames in compiled code (axes, origins, wrist
   point), for the annotation and the paths' compiled point;
