@@ -13,7 +13,15 @@ every kernel loads from the image's cache.
 from __future__ import annotations
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import annotate, branch_kernel, joint_frames, kernel, search_kernel, warmup
+from app.kinematics.ik import (
+    annotate,
+    branch_kernel,
+    joint_frames,
+    kernel,
+    query_kernel,
+    search_kernel,
+    warmup,
+)
 from app.kinematics.jit import available
 from app.kinematics.paths import point_kernel, pose_kernel, walk_kernel
 
@@ -21,6 +29,7 @@ from app.kinematics.paths import point_kernel, pose_kernel, walk_kernel
 KERNEL_MODULES = (
     kernel,
     search_kernel,
+    query_kernel,
     annotate,
     branch_kernel,
     joint_frames,

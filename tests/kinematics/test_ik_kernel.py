@@ -206,3 +206,36 @@ def test_jit_without_a_writable_cache_still_compiles(monkeypatch) -> None:
 
     compiled = jit.jit(add_one)
     assert compiled(1.0) == 2.0 and compiled.signatures  # a Numba dispatcher, compiled
+
+
+@pytest.mark.parametrize("case", ["random", "ties", "equal", "nan", "short"])
+def test_nearest_and_ranking_match_a_stable_sort(case: str) -> None:
+    """The compiled argmin of the table distances and the ranking of the nearest samples:
+    NumPy's first minimum and stable sort (ties by index), with ties, a NaN entry past the
+    first ``count`` (never ranked: no comparison with it holds) and a table shorter than
+    the ranking."""
+    from app.kinematics.ik import search_kernel
+
+    rng = np.random.default_rng(4)
+    n = 40 if case == "short" else 4096
+    d = rng.random(n).astype(np.float32)
+    if case == "ties":
+        d = np.round(d * 60.0).astype(np.float32)
+    if case == "equal":
+        d[:] = 0.5
+    if case == "nan":
+        d[1000] = np.nan
+    near = np.empty(64, dtype=np.int64)
+    count = search_kernel._rank_nearest(d, near, 64)
+    order = np.argsort(np.where(np.isnan(d), np.inf, d), kind="stable")
+    assert count == min(n, 64)
+    np.testing.assert_array_equal(near[:count], order[:count])
+    MT = rng.random((12, n)).astype(np.float32)
+    x = np.zeros(12, dtype=np.float32)
+    x[3] = -1.0  # d = W2 − MT[3]: ties in W2 stay ties when MT[3] is constant
+    if case in ("ties", "equal"):
+        MT[3] = 0.5
+    out = np.empty(n, dtype=np.float32)
+    best = ik_kernel.sample_distances(MT, d, x, out)
+    np.testing.assert_array_equal(out, d + MT[0] * x[0] + MT[1] * x[1] + MT[2] * x[2] - MT[3])
+    assert best == int(np.argmin(np.where(np.isnan(out), np.inf, out)))

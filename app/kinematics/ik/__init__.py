@@ -13,6 +13,9 @@ The package, one concept per module:
 - :mod:`.kernel`, :mod:`.search_kernel`: the compiled attempt and the compiled whole search
   (Numba), and the named tuples they take;
 - :mod:`.compiled`: the driver of the compiled search, full pose only;
+- :mod:`.single`, :mod:`.query_kernel`: the fast path when one solution nearest the seed is
+  wanted (the HTTP default): the closed form or the search and the answer's annotation in
+  one compiled call per chunk, one Pinocchio check, the general path's answers;
 - :mod:`.annotate`: an answer's branch label and manipulability in compiled code;
 - :mod:`.joint_frames`: the chain's joint frames in compiled code (axes, origins, wrist
   point), for the annotation and the paths' compiled point;
@@ -122,6 +125,7 @@ from app.kinematics.ik.problem import (
 )
 from app.kinematics.ik.ranking import check_rank_by
 from app.kinematics.ik.search import Clock, IKResult, Search
+from app.kinematics.ik.single import applies, solve_single
 from app.kinematics.ik.version import SOLVER_VERSION
 from app.kinematics.models import RobotModel
 
@@ -221,6 +225,13 @@ def solve(
         raise Cancelled()
     check_rank_by(options.rank_by, clearance)
     task = options.task()
+    if applies(ch, options, task, accept, rng, clearance):
+        res = solve_single(
+            robot, ch, target, options, task, q_seed, t_start=t_start, deadline=deadline,
+            clock=clock, cancel=cancel, annotate=annotate,
+        )  # fmt: skip
+        if res is not None:
+            return res
     problem = IKProblem(robot, ch, target, q_seed, options, task)
     search = Search(
         problem,

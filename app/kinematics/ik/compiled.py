@@ -54,8 +54,8 @@ def run_compiled(s: Search, deadline: float, max_iterations: int | None) -> None
     st, qa = state.counters, state.qa
     cap = max_iterations if max_iterations is not None else 1 << 62
     table_restarts = s.rng is None
-    # the seed check only (as the Python loop) when the budget is already spent
-    chunk = 0 if clock() >= deadline else chunk_attempts
+    # the first attempt runs even when the budget is already spent (as the Python loop)
+    chunk = 1 if clock() >= deadline else chunk_attempts
     search = direct(search_kernel.search, state, consts, H, tol_p2, tol_r2, cap, chunk, True)
     try:
         while True:

@@ -232,9 +232,16 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
     it = s.iterations
     best_energy, best_qa = s.best_energy, None
     out_of_budget, evaluate, step = s.out_of_budget, loop.evaluate, loop.step
+    # The first attempt (from the seed, or from the nearest table sample the far seed jumps
+    # to) runs whatever the clock says, capped by the iterations only: a query that finds its
+    # budget already spent (a busy event loop) still answers an easy target.
+    first = True
     try:
         while True:
-            if out_of_budget(it, cap, deadline):
+            if first:
+                if it >= cap:
+                    return
+            elif out_of_budget(it, cap, deadline):
                 return
             conv, energy, ep2, Re, et = evaluate(qa)
             it += 1
@@ -245,6 +252,7 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
                     return
                 # Converged but rejected or a duplicate: jump elsewhere.
                 qa = s.restart()
+                first = False
                 attempt_iters, best_attempt, stall = 0, math.inf, 0
                 continue
             # First iterate far from the target: jump to the nearest table sample.
@@ -262,6 +270,7 @@ def run_python(s: Search, deadline: float, max_iterations: int | None) -> None:
                 stall += 1
                 if stall >= stall_limit or attempt_iters >= attempt_cap:
                     qa = s.restart()
+                    first = False
                     attempt_iters, best_attempt, stall = 0, math.inf, 0
                     continue
             qa = step(qa, Re, et, energy)

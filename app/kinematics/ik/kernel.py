@@ -388,8 +388,11 @@ def sample_distances(MT, W2, x, d):  # pragma: no cover
         for i in range(n):
             d[i] += MT[j, i] * c
     best = 0
+    m = d[0]  # the smallest so far, kept in a register (no reload of d[best])
     for i in range(1, n):
-        if d[i] < d[best]:
+        v = d[i]
+        if v < m:
+            m = v
             best = i
     return best
 

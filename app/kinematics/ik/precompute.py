@@ -38,6 +38,7 @@ if TYPE_CHECKING:
     from app.kinematics.ik.boundary import SearchState
     from app.kinematics.ik.branches import BranchForm
     from app.kinematics.ik.failure import ReachParts
+    from app.kinematics.ik.query_kernel import QueryConstants, QueryState
 
 
 class SamplePoses(NamedTuple):
@@ -114,6 +115,8 @@ class IKChain:
         #: run_compiled` takes it and puts it back): the next query on that thread reuses
         #: its arrays, hot in cache, instead of allocating them.
         self.idle_states: dict[int, SearchState] = {}
+        #: The same for the single-answer fast path (:mod:`app.kinematics.ik.single`).
+        self.idle_query_states: dict[int, QueryState] = {}
         self._robot = robot
 
     def prepare(self) -> IKChain:
@@ -124,7 +127,7 @@ class IKChain:
         from app.kinematics.ik.warmup import warm_up
 
         warm_up()  # the kernels (once per process)
-        _ = self.poses, self.search_constants, self.annotation
+        _ = self.poses, self.search_constants, self.annotation, self.query_constants
         analytic_ik.prepare(self._robot, self)
         return self
 
@@ -200,6 +203,14 @@ class IKChain:
         from app.kinematics.ik.annotate import annotation_constants
 
         return annotation_constants(self._robot, self)
+
+    @cached_property
+    def query_constants(self) -> QueryConstants | None:
+        """The fast path's packed constants (:func:`app.kinematics.ik.query_kernel.pack`), or
+        None: no compiled search or annotation (the general path answers)."""
+        from app.kinematics.ik.query_kernel import pack
+
+        return pack(self)
 
     @cached_property
     def reach_parts(self) -> ReachParts | None:

@@ -57,19 +57,33 @@ PAUSED, JUMP = 3, 4
 @jit
 def _rank_nearest(d, near, count):  # pragma: no cover
     """The ``count`` smallest entries of ``d`` in increasing order (ties: lower index first)
-    into ``near``: one pass with an insertion into the sorted prefix."""
+    into ``near``: one pass with an insertion into the sorted prefix. Once the prefix is
+    full, an entry enters only if it is below the prefix's largest, kept in a register."""
+    n_d = d.shape[0]
     n = 0
-    for i in range(d.shape[0]):
+    i = 0
+    while i < n_d and n < count:  # the first ``count`` entries, sorted by insertion
         v = d[i]
-        if n == count and not v < d[near[n - 1]]:
-            continue
-        j = n if n < count else count - 1
+        j = n
         while j > 0 and v < d[near[j - 1]]:
             near[j] = near[j - 1]
             j -= 1
         near[j] = i
-        if n < count:
-            n += 1
+        n += 1
+        i += 1
+    if n == 0:
+        return 0
+    largest = d[near[n - 1]]
+    while i < n_d:
+        v = d[i]
+        if v < largest:
+            j = count - 1
+            while j > 0 and v < d[near[j - 1]]:
+                near[j] = near[j - 1]
+                j -= 1
+            near[j] = i
+            largest = d[near[count - 1]]
+        i += 1
     return n
 
 

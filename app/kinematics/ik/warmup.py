@@ -2,11 +2,11 @@
 
 The solver's kernels (:mod:`.kernel`, :mod:`.search_kernel`, the UR closed form of
 :mod:`app.kinematics.analytic_ik.ur`, the annotation of :mod:`.annotate` with the branch flags
-of :mod:`.branch_kernel`) are compiled by Numba on first use, or loaded from its on-disk
-cache. :func:`warm_up` does all of it before any query (when a chain is prepared, in each
-worker process), so that no query's time budget pays for compiling; :func:`warmed` is True
-only once every kernel is ready. The whole core's kernels (the paths' too) and their cache
-counts: :mod:`app.kinematics.kernels`.
+of :mod:`.branch_kernel`, the fast path's query of :mod:`.query_kernel`) are compiled by
+Numba on first use, or loaded from its on-disk cache. :func:`warm_up` does all of it before
+any query (when a chain is prepared, in each worker process), so that no query's time
+budget pays for compiling; :func:`warmed` is True only once every kernel is ready. The whole
+core's kernels (the paths' too) and their cache counts: :mod:`app.kinematics.kernels`.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import threading
 from collections.abc import Callable
 
 from app.kinematics import analytic_ik
-from app.kinematics.ik import annotate, kernel, search_kernel
+from app.kinematics.ik import annotate, kernel, query_kernel, search_kernel
 from app.kinematics.jit import available
 
 _LOCK = threading.Lock()
@@ -58,6 +58,7 @@ def warm_up() -> None:
         search_kernel.warm_up()
         analytic_ik.warm_up()
         annotate.warm_up()
+        query_kernel.warm_up()
         for warm in _CALLERS:
             warm()
         _warmed = True  # only now: every kernel is ready
