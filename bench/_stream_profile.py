@@ -11,7 +11,8 @@ Printed by ``python -m bench stream`` after its tables:
   echo (a uvloop ``asyncio.Protocol``, 72-byte messages: the size of a binary IK frame),
   alternating message by message; and the same WebSocket echo through each client the
   service's table uses (the blocking one, the ``websockets`` sync client with its reader
-  thread, the ``websockets`` asyncio client on the standard event loop): what each client
+  thread, the ``websockets`` asyncio client on the standard event loop, the Python client's
+  :class:`denavit_client.stream.CallingThreadWebSocket`): what each client
   adds to a round trip, whatever the server does.
 """
 
@@ -27,6 +28,7 @@ import time
 
 import numpy as np
 import orjson
+from denavit_client.stream import CallingThreadWebSocket
 from websockets.asyncio.client import connect as aio_connect
 from websockets.sync.client import connect
 
@@ -144,7 +146,9 @@ def floors(n: int) -> None:
     frame = bytes(72)
     ws_us: list[float] = []
     tcp_us: list[float] = []
-    clients: dict[str, list[float]] = {"blocking": [], "websockets sync": [], "asyncio": []}
+    clients: dict[str, list[float]] = {
+        "blocking": [], "websockets sync": [], "asyncio": [], "calling thread": []
+    }  # fmt: skip
     try:
         with serve(code=ECHO_CODE) as server:
             port = int(server.url.rsplit(":", 1)[1])
@@ -168,6 +172,7 @@ def floors(n: int) -> None:
             url = f"ws://127.0.0.1:{port}/echo"
             loop = asyncio.new_event_loop()
             aws = loop.run_until_complete(aio_connect(url, compression=None, proxy=None))
+            own = CallingThreadWebSocket(url)
             with connect(url, compression=None, proxy=None) as sync:
                 for i in range(n + 50):
                     t0 = time.perf_counter_ns()
@@ -178,10 +183,16 @@ def floors(n: int) -> None:
                     sync.recv()
                     t2 = time.perf_counter_ns()
                     t_aio = loop.run_until_complete(_aio_echo(aws, frame))
+                    t3 = time.perf_counter_ns()
+                    own.send(frame)
+                    own.recv()
+                    t4 = time.perf_counter_ns()
                     if i >= 50:
                         clients["blocking"].append((t1 - t0) / 1e3)
                         clients["websockets sync"].append((t2 - t1) / 1e3)
                         clients["asyncio"].append(t_aio)
+                        clients["calling thread"].append((t4 - t3) / 1e3)
+            own.close()
             loop.run_until_complete(aws.close())
             loop.close()
             ws.close()
@@ -202,6 +213,8 @@ def floors(n: int) -> None:
         "blocking": "blocking (`bench._ws`, the calling thread reads)",
         "websockets sync": "`websockets` sync client (reader thread)",
         "asyncio": "`websockets` asyncio client (standard event loop)",
+        "calling thread": "`denavit_client.stream.CallingThreadWebSocket` (`websockets`' "
+        "sans-I/O protocol, the calling thread reads)",
     }
     for key, us in clients.items():
         extra = float(np.median(us)) - base

@@ -19,6 +19,11 @@ transports alternating target by target so load hits them alike:
   asyncio client (``websockets.asyncio.client``, the standard library's event loop), each
   round trip timed inside its coroutine (send, then await the answer), as a servo loop
   written with asyncio would: no reader thread, the loop's own wake-up instead;
+- **stream, binary, denavit_client**: the same targets on a fourth socket, through the
+  project's Python client (``denavit_client.stream.open_stream``, ``Stream.ik_step``: its
+  frame built and its answer unpacked with NumPy, the socket read in the calling thread by
+  ``websockets``' own sans-I/O protocol, :class:`denavit_client.stream.CallingThreadWebSocket`),
+  what a lab's servo loop written with the client pays;
 - **stream, binary, 8 in flight**: the same frames pipelined (the time between answers;
   "median" and "p99" are then of that interval, not of a round trip).
 
@@ -49,6 +54,8 @@ import time
 import httpx
 import numpy as np
 import orjson
+from denavit_client.models import IKRequest
+from denavit_client.stream import open_stream
 from websockets.asyncio.client import connect as aio_connect
 from websockets.sync.client import connect
 
@@ -64,9 +71,10 @@ WINDOW = 8
 PIPELINED = f"stream, binary, {WINDOW} in flight"
 BLOCKING = "stream, binary, blocking client"
 ASYNCIO = "stream, binary, asyncio client"
-TRANSPORTS = ("HTTP", "stream, JSON", "stream, binary", BLOCKING, ASYNCIO, PIPELINED)
+CLIENT = "stream, binary, denavit_client"
+TRANSPORTS = ("HTTP", "stream, JSON", "stream, binary", BLOCKING, ASYNCIO, CLIENT, PIPELINED)
 #: The one-at-a-time binary rows (each gets its target line).
-ONE_AT_A_TIME = ("stream, binary", BLOCKING, ASYNCIO)
+ONE_AT_A_TIME = ("stream, binary", BLOCKING, ASYNCIO, CLIENT)
 #: The targets: one-at-a-time stream round trips per second over HTTP's, UR5 p99 (ms).
 TARGET_RATIO, TARGET_P99_MS = 5.0, 1.0
 
@@ -107,6 +115,7 @@ def _run_on(url, ws_url, robot_id, q, times, loop, aws) -> dict[str, list[float]
     with (
         httpx.Client(base_url=url, timeout=120) as http,
         connect(ws_url, compression=None, proxy=None, open_timeout=60) as ws,
+        open_stream(url, robot_id) as client,
     ):
         fk = http.post(f"/robots/{robot_id}/fk", json={"q": q}).json()
         pose = next(iter(fk["poses"].values()))
@@ -119,6 +128,7 @@ def _run_on(url, ws_url, robot_id, q, times, loop, aws) -> dict[str, list[float]
             sock.send(first.decode())
             assert orjson.loads(sock.recv())["success"]
         assert orjson.loads(loop.run_until_complete(_aio_round(aws, first.decode()))[1])["success"]
+        assert client.ik(IKRequest.from_dict({"seed": q, "target": pose_target(pose)})).success
         for _ in range(50):  # warm-up
             http.post(f"/robots/{robot_id}/ik", json={"target": pose_target(pose)})
         for i, (p, o) in enumerate(targets):
@@ -152,6 +162,10 @@ def _run_on(url, ws_url, robot_id, q, times, loop, aws) -> dict[str, list[float]
             dt, reply = loop.run_until_complete(_aio_round(aws, frame))
             times[ASYNCIO].append(dt)
             assert isinstance(reply, bytes), reply
+
+            t = time.perf_counter()
+            client.ik_step(p, o)
+            times[CLIENT].append(time.perf_counter() - t)
         lean.close()
         times[PIPELINED] = _pipelined(ws, targets)
     return times

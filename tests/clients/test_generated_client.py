@@ -225,3 +225,8 @@ def test_the_stream_answers_as_the_http_routes(api, server: str) -> None:
             stream.fk(FKRequest(q=[0.0]))
         assert bad.value.problem.status == 422 and bad.value.problem.field.startswith("q")
         assert stream.fk(FKRequest(q=q_list(q))).q == http.q  # the socket stays usable
+        with pytest.raises(StreamError) as short:  # a 6-number target: the service says why
+            stream.ik_step(pose.position[:2], pose.orientation)
+        assert short.value.problem.status == 422
+        ok, q_again, _, _ = stream.ik_step(pose.position, pose.orientation)
+        assert ok and np.linalg.norm(fk(api, q_again)[0] - np.array(pose.position)) <= 1e-6

@@ -6,19 +6,33 @@ answers of the HTTP routes, in order (docs/stream.md). :class:`Stream` sends the
 request models and returns the generated answer models; binary frames (float64 arrays) are
 :meth:`Stream.fk_pose` and :meth:`Stream.ik_step`. An IK without a seed starts from the last
 successful IK solution on the socket.
+
+The socket is read in the calling thread (:class:`CallingThreadWebSocket`): the
+``websockets`` package's own RFC 6455 protocol (its sans-I/O ``ClientProtocol``: handshake,
+random masking keys, fragmented messages, pings answered, the closing handshake, the
+message size bound) over a plain blocking socket. Its sync client reads in a background
+thread and hands each message over through a lock, which a servo loop waiting for every
+answer pays on each round trip (docs/stream.md, "Speed").
 """
 
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
+import socket
+import ssl
+import struct
+from collections import deque
+from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from websockets.sync.client import ClientConnection
-from websockets.sync.client import connect as ws_connect
+from websockets.client import ClientProtocol
+from websockets.frames import Frame, Opcode
+from websockets.http11 import Response
+from websockets.protocol import State
+from websockets.uri import parse_uri
 
 from .models.fk_request import FKRequest
 from .models.fk_response import FKResponse
@@ -30,6 +44,8 @@ from .models.problem import Problem
 
 #: Op codes of binary frames.
 FK, JACOBIAN, IK = 1.0, 2.0, 3.0
+#: A binary ik frame: op code, id, position (3), quaternion [x, y, z, w] (4), little-endian.
+_IK_FRAME = struct.Struct("<9d")
 
 
 class StreamError(Exception):
@@ -40,10 +56,135 @@ class StreamError(Exception):
         self.problem = problem
 
 
+class CallingThreadWebSocket:
+    """A WebSocket client connection read and written in the calling thread.
+
+    ``websockets``' sans-I/O :class:`~websockets.client.ClientProtocol` does the protocol;
+    this class only moves its bytes over a blocking socket (TCP_NODELAY; TLS for ``wss://``
+    with the default context). :meth:`recv` raises ``websockets``'
+    :class:`~websockets.exceptions.ConnectionClosed` (with the close code and reason) once
+    the connection is closed, as its sync client does.
+
+    Parameters
+    ----------
+    url
+        ``ws://host[:port]/path`` or ``wss://…``.
+    additional_headers
+        Extra headers of the upgrade request (e.g. ``Authorization``).
+    open_timeout
+        Seconds allowed for the TCP connection and the handshake; afterwards :meth:`recv`
+        blocks until a message comes (the service answers every request).
+    max_size
+        Largest message accepted (bytes), as the sync client's ``max_size``.
+    """
+
+    def __init__(
+        self,
+        url: str,
+        *,
+        additional_headers: Mapping[str, str] | None = None,
+        open_timeout: float = 10.0,
+        max_size: int = 1 << 20,
+    ) -> None:
+        uri = parse_uri(url)
+        self.protocol = ClientProtocol(uri, max_size=max_size)
+        sock = socket.create_connection((uri.host, uri.port), timeout=open_timeout)
+        try:
+            sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+            if uri.secure:
+                sock = ssl.create_default_context().wrap_socket(sock, server_hostname=uri.host)
+            self.sock = sock
+            self._messages: deque[str | bytes] = deque()
+            self._parts: list[bytes] = []
+            self._text = False
+            request = self.protocol.connect()
+            for name, value in (additional_headers or {}).items():
+                request.headers[name] = value
+            self.protocol.send_request(request)
+            self._flush()
+            while not any(isinstance(e, Response) for e in self._read()):
+                if self.protocol.state is State.CLOSED:
+                    break
+            if self.protocol.handshake_exc is not None:
+                raise self.protocol.handshake_exc
+            if self.protocol.state is not State.OPEN:
+                raise ConnectionError(f"{url}: the connection closed during the handshake")
+            sock.settimeout(None)
+        except BaseException:
+            sock.close()
+            raise
+
+    def _flush(self) -> None:
+        """Send what the protocol has to send (frames, pongs, the close reply, EOF)."""
+        for data in self.protocol.data_to_send():
+            if data:
+                self.sock.sendall(data)
+            else:  # the protocol's end of the stream
+                try:
+                    self.sock.shutdown(socket.SHUT_WR)
+                except OSError:
+                    pass
+
+    def _read(self) -> list[Any]:
+        """One read of the socket fed to the protocol; its events (frames, the response)."""
+        data = self.sock.recv(1 << 16)
+        if data:
+            self.protocol.receive_data(data)
+        else:
+            self.protocol.receive_eof()
+        self._flush()
+        return self.protocol.events_received()
+
+    def send(self, message: str | bytes) -> None:
+        """One message: a text frame for ``str``, a binary frame for ``bytes``."""
+        if isinstance(message, str):
+            self.protocol.send_text(message.encode())
+        else:
+            self.protocol.send_binary(message)
+        self._flush()
+
+    def recv(self) -> str | bytes:
+        """The next message (``str`` for text, ``bytes`` for binary), fragments joined."""
+        while not self._messages:
+            if self.protocol.state is State.CLOSED:
+                raise self.protocol.close_exc
+            for frame in self._read():
+                if isinstance(frame, Frame):
+                    self._take(frame)
+        return self._messages.popleft()
+
+    def _take(self, frame: Frame) -> None:
+        if frame.opcode is Opcode.TEXT or frame.opcode is Opcode.BINARY:
+            self._text, self._parts = frame.opcode is Opcode.TEXT, [frame.data]
+        elif frame.opcode is Opcode.CONT:
+            self._parts.append(frame.data)
+        else:  # ping, pong, close: the protocol answers them
+            return
+        if frame.fin:
+            data = b"".join(self._parts)
+            self._messages.append(data.decode() if self._text else data)
+            self._parts = []
+
+    def close(self, code: int = 1000) -> None:
+        """The closing handshake (the server's close frame awaited up to 2 s), then the
+        socket closed."""
+        try:
+            if self.protocol.state is State.OPEN:
+                self.protocol.send_close(code)
+                self._flush()
+                self.sock.settimeout(2.0)
+                while self.protocol.state is not State.CLOSED:
+                    self._read()
+        except OSError:
+            pass
+        finally:
+            self.sock.close()
+
+
 class Stream:
     """One open stream socket (see :func:`open_stream`)."""
 
-    def __init__(self, ws: ClientConnection) -> None:
+    def __init__(self, ws: CallingThreadWebSocket) -> None:
         self.ws = ws
         self._next_id = 0
 
@@ -81,6 +222,10 @@ class Stream:
         self._next_id += 1
         frame = np.concatenate([[op, float(self._next_id)], np.asarray(payload, np.float64)])
         self.ws.send(frame.astype("<f8").tobytes())
+        return self._binary_answer()
+
+    def _binary_answer(self) -> NDArray[np.float64]:
+        """The answer to the last binary frame: its values after the op code and id."""
         reply = self.ws.recv()
         if isinstance(reply, str):
             raise StreamError(Problem.from_dict(self._json(reply)["error"]))
@@ -104,8 +249,17 @@ class Stream:
     ) -> tuple[bool, NDArray[np.float64], float, float]:
         """IK of one target by a binary frame: ``(success, q, position_error,
         orientation_error)``; options from the socket's last JSON ``ik`` request."""
-        target = np.concatenate([np.asarray(position, np.float64), orientation])
-        values = self._binary(IK, target)
+        try:  # the frame packed at once (the common case: 3 and 4 numbers)
+            x, y, z = position  # type: ignore[misc]
+            qx, qy, qz, qw = orientation  # type: ignore[misc]
+            frame = _IK_FRAME.pack(IK, float(self._next_id + 1), x, y, z, qx, qy, qz, qw)
+        except (TypeError, ValueError, struct.error):  # anything else: as the server says
+            target = np.concatenate([np.asarray(position, np.float64), orientation])
+            values = self._binary(IK, target)
+        else:
+            self._next_id += 1
+            self.ws.send(frame)
+            values = self._binary_answer()
         return bool(values[0] == 1.0), values[1:-2], float(values[-2]), float(values[-1])
 
 
@@ -125,6 +279,9 @@ def open_stream(base_url: str, robot_id: str, token: str | None = None) -> Itera
     """
     url = base_url.replace("http", "ws", 1).rstrip("/") + f"/robots/{robot_id}/stream"
     headers = {"Authorization": f"Bearer {token}"} if token else None
-    # The service offers no compression: do not ask for it.
-    with ws_connect(url, compression=None, additional_headers=headers) as ws:
+    # The service offers no compression: none is asked for (no extensions).
+    ws = CallingThreadWebSocket(url, additional_headers=headers)
+    try:
         yield Stream(ws)
+    finally:
+        ws.close()
