@@ -22,9 +22,9 @@ import socket
 import ssl
 import struct
 from collections import deque
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -95,7 +95,7 @@ class CallingThreadWebSocket:
                 sock = ssl.create_default_context().wrap_socket(sock, server_hostname=uri.host)
             self.sock = sock
             self._messages: deque[str | bytes] = deque()
-            self._parts: list[bytes] = []
+            self._parts: list[bytes | bytearray | memoryview] = []
             self._text = False
             request = self.protocol.connect()
             for name, value in (additional_headers or {}).items():
@@ -103,7 +103,7 @@ class CallingThreadWebSocket:
             self.protocol.send_request(request)
             self._flush()
             while not any(isinstance(e, Response) for e in self._read()):
-                if self.protocol.state is State.CLOSED:
+                if self.closed:
                     break
             if self.protocol.handshake_exc is not None:
                 raise self.protocol.handshake_exc
@@ -146,7 +146,7 @@ class CallingThreadWebSocket:
     def recv(self) -> str | bytes:
         """The next message (``str`` for text, ``bytes`` for binary), fragments joined."""
         while not self._messages:
-            if self.protocol.state is State.CLOSED:
+            if self.closed:
                 raise self.protocol.close_exc
             for frame in self._read():
                 if isinstance(frame, Frame):
@@ -173,12 +173,17 @@ class CallingThreadWebSocket:
                 self.protocol.send_close(code)
                 self._flush()
                 self.sock.settimeout(2.0)
-                while self.protocol.state is not State.CLOSED:
+                while not self.closed:
                     self._read()
         except OSError:
             pass
         finally:
             self.sock.close()
+
+    @property
+    def closed(self) -> bool:
+        """Whether the connection is closed (the closing handshake done, or the socket gone)."""
+        return self.protocol.state is State.CLOSED
 
 
 class Stream:
@@ -250,8 +255,8 @@ class Stream:
         """IK of one target by a binary frame: ``(success, q, position_error,
         orientation_error)``; options from the socket's last JSON ``ik`` request."""
         try:  # the frame packed at once (the common case: 3 and 4 numbers)
-            x, y, z = position  # type: ignore[misc]
-            qx, qy, qz, qw = orientation  # type: ignore[misc]
+            x, y, z = cast(Sequence[float], position)
+            qx, qy, qz, qw = cast(Sequence[float], orientation)
             frame = _IK_FRAME.pack(IK, float(self._next_id + 1), x, y, z, qx, qy, qz, qw)
         except (TypeError, ValueError, struct.error):  # anything else: as the server says
             target = np.concatenate([np.asarray(position, np.float64), orientation])
