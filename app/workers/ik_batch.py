@@ -47,8 +47,10 @@ fresh pool. Workers end with the process that started them
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import math
+import mmap
 import multiprocessing
 import multiprocessing.forkserver
 import pickle
@@ -178,18 +180,45 @@ def _worker_robot(key: str, buffer: memoryview, recipe_at: int, recipe_len: int)
 Rows = tuple[str, int, int, tuple[int, int], str, int, int]
 
 
+#: The segment this worker keeps mapped between the chunks of one batch: (name, mapping).
+_MAPPED: tuple[str, mmap.mmap] | None = None
+
+
 def _worker_chunk(rows: Rows, task: BatchTask) -> tuple[Notes, float] | None:
     """Targets ``start`` … ``stop − 1`` of a batch of ``n`` in the shared ``segment``
     (:meth:`BatchAnswers.on_buffer`), solved in a worker, their answers written in place.
     Returns the rows' failure notes and the CPU seconds spent on them (this process's
     clock: the measured cost is the work's, whatever else the machine runs); None when the
-    segment is gone (the batch was withdrawn before this chunk started)."""
+    segment is gone (the batch was withdrawn before this chunk started).
+
+    The worker keeps the batch's segment mapped from its first chunk to the first chunk of
+    another batch (:func:`app.workers.shared_segment.still_there` checks, per chunk, that the
+    caller has not unlinked it), instead of mapping and unmapping it for every chunk
+    (~80 µs a chunk measured, docs/benchmarks.md); at most one batch's segment (unlinked by
+    then: its memory is freed when the mapping goes) stays mapped in an idle worker."""
+    global _MAPPED
     segment = rows[0]
-    try:
-        with shared_segment.attach(segment) as buffer:
-            return _solve_rows(buffer, rows, task)
-    except FileNotFoundError:
+    if _MAPPED is not None and _MAPPED[0] != segment:
+        _drop_mapping()
+    if _MAPPED is None:
+        try:
+            _MAPPED = (segment, shared_segment.map_segment(segment))
+        except FileNotFoundError:
+            return None
+    elif not shared_segment.still_there(segment):
+        _drop_mapping()
         return None
+    return _solve_rows(memoryview(_MAPPED[1]), rows, task)
+
+
+def _drop_mapping() -> None:
+    """Unmap the kept segment (its views are gone: none outlives :func:`_solve_rows`)."""
+    global _MAPPED
+    if _MAPPED is not None:
+        _, mapped = _MAPPED
+        _MAPPED = None
+        with contextlib.suppress(BufferError):  # a view still exported: freed when collected
+            mapped.close()
 
 
 def _solve_rows(buffer: memoryview, rows: Rows, task: BatchTask) -> tuple[Notes, float]:

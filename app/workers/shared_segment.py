@@ -60,11 +60,7 @@ def attach(name: str) -> Iterator[mmap.mmap]:
     FileNotFoundError
         The segment is gone (its creator has unlinked it: the work was withdrawn).
     """
-    fd = _posixshmem.shm_open("/" + name, os.O_RDWR, mode=0o600)
-    try:
-        mapped = mmap.mmap(fd, os.fstat(fd).st_size)
-    finally:
-        os.close(fd)
+    mapped = map_segment(name)
     try:
         yield mapped
     finally:
@@ -72,3 +68,30 @@ def attach(name: str) -> Iterator[mmap.mmap]:
             mapped.close()
         except BufferError:  # a view still exported (an error mid-chunk): freed when collected
             pass
+
+
+def map_segment(name: str) -> mmap.mmap:
+    """The segment ``name`` mapped read-write in this process, for the caller to close (not
+    registered with any resource tracker; never unlinked here).
+
+    Raises
+    ------
+    FileNotFoundError
+        The segment is gone (its creator has unlinked it).
+    """
+    fd = _posixshmem.shm_open("/" + name, os.O_RDWR, mode=0o600)
+    try:
+        return mmap.mmap(fd, os.fstat(fd).st_size)
+    finally:
+        os.close(fd)
+
+
+def still_there(name: str) -> bool:
+    """Whether the segment ``name`` still has its name (its creator has not unlinked it):
+    a mapping kept from before says nothing about that."""
+    try:
+        fd = _posixshmem.shm_open("/" + name, os.O_RDONLY, mode=0o600)
+    except FileNotFoundError:
+        return False
+    os.close(fd)
+    return True
