@@ -30,7 +30,7 @@ every chunk.
 Chunks by measured cost: the pool keeps each robot's (and frame's) solve time per target,
 measured by the workers' CPU clocks (a moving average: the work's cost, whatever else the
 machine runs), and cuts a batch into chunks of decreasing size (guided scheduling: each
-about a ``2 × processes``-th of what is left, of :data:`CHUNK_MIN_MS` to
+about a ``processes``-th of what is left (:data:`GUIDE`), of :data:`CHUNK_MIN_MS` to
 :data:`CHUNK_MAX_MS` of measured work), so that the chunks cost little to hand out and the
 workers run out of work together.
 
@@ -86,6 +86,10 @@ CHUNK_MAX_MS = 50.0
 #: Measured work (ms) of the smallest chunk: the last chunks, which even out the workers'
 #: ends (a chunk costs the caller ~0.1–0.4 ms of CPU: submission, its round trip, waiting).
 CHUNK_MIN_MS = 4.0
+#: Guided scheduling's share: each chunk about ``1 / (GUIDE × processes)`` of the targets
+#: left (the classic guided self-scheduling's 1; 2 made ~1/3 more chunks, each of them
+#: ~0.3 ms of the caller's CPU and ~0.15 ms of a worker's, docs/benchmarks.md).
+GUIDE = 1
 #: Solve time per target (µs) assumed for a robot and frame not measured yet.
 DEFAULT_COST_US = 100.0
 #: Weight of a chunk's measurement in the moving average of the cost per target.
@@ -234,7 +238,7 @@ def _solve_rows(buffer: memoryview, rows: Rows, task: BatchTask) -> tuple[Notes,
 
 def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
     """Sizes of consecutive chunks of ``n`` targets, decreasing (guided scheduling): each
-    about ``1 / (2 × processes)`` of the targets left, between :data:`CHUNK_MIN_MS` and
+    about ``1 / (GUIDE × processes)`` of the targets left, between :data:`CHUNK_MIN_MS` and
     :data:`CHUNK_MAX_MS` of work at ``cost_us`` per target, at most :data:`CHUNK_MAX`
     targets and a budget within :data:`CHUNK_BUDGET_MS` where possible."""
     most = min(CHUNK_MAX, math.floor(CHUNK_MAX_MS * 1e3 / cost_us))
@@ -244,7 +248,7 @@ def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> li
     sizes = []
     left = n
     while left > 0:
-        size = min(left, most, max(least, math.ceil(left / (2 * processes))))
+        size = min(left, most, max(least, math.ceil(left / (GUIDE * processes))))
         if 2 * (left - size) < least and left <= most:  # no crumb after the last chunk
             size = left
         sizes.append(size)

@@ -111,6 +111,9 @@ def test_chunks_by_measured_cost() -> None:
     sizes = ik_batch.chunk_sizes(4000, 2, 65.0, 5.0)
     most = min(int(ik_batch.CHUNK_MAX_MS * 1e3 / 65.0), int(ik_batch.CHUNK_BUDGET_MS / 5.0))
     assert sizes[0] == most and sizes[-1] < sizes[0] // 4
+    # each a processes-th of what is left (guided self-scheduling), within the bounds: 4000
+    # UR5-like targets (50 µs, 5 ms budget) in 12 chunks, the budget bound (400) first
+    assert ik_batch.chunk_sizes(4000, 2, 50.0, 5.0) == [400] * 9 + [200, 100, 100]
 
 
 def test_an_error_while_collecting_unlinks_the_segment(pool, registry) -> None:
