@@ -30,7 +30,7 @@ every chunk.
 Chunks by measured cost: the pool keeps each robot's (and frame's) solve time per target,
 measured by the workers' CPU clocks (a moving average: the work's cost, whatever else the
 machine runs), and cuts a batch into chunks of decreasing size (guided scheduling: each
-about a ``2 × processes``-th of what is left, of :data:`CHUNK_MIN_MS` to
+about a ``processes``-th of what is left (:data:`GUIDE`), of :data:`CHUNK_MIN_MS` to
 :data:`CHUNK_MAX_MS` of measured work), so that the chunks cost little to hand out and the
 workers run out of work together.
 
@@ -47,8 +47,10 @@ fresh pool. Workers end with the process that started them
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import math
+import mmap
 import multiprocessing
 import multiprocessing.forkserver
 import pickle
@@ -84,6 +86,10 @@ CHUNK_MAX_MS = 50.0
 #: Measured work (ms) of the smallest chunk: the last chunks, which even out the workers'
 #: ends (a chunk costs the caller ~0.1–0.4 ms of CPU: submission, its round trip, waiting).
 CHUNK_MIN_MS = 4.0
+#: Guided scheduling's share: each chunk about ``1 / (GUIDE × processes)`` of the targets
+#: left (the classic guided self-scheduling's 1; 2 made ~1/3 more chunks, each of them
+#: ~0.3 ms of the caller's CPU and ~0.15 ms of a worker's, docs/benchmarks.md).
+GUIDE = 1
 #: Solve time per target (µs) assumed for a robot and frame not measured yet.
 DEFAULT_COST_US = 100.0
 #: Weight of a chunk's measurement in the moving average of the cost per target.
@@ -178,18 +184,45 @@ def _worker_robot(key: str, buffer: memoryview, recipe_at: int, recipe_len: int)
 Rows = tuple[str, int, int, tuple[int, int], str, int, int]
 
 
+#: The segment this worker keeps mapped between the chunks of one batch: (name, mapping).
+_MAPPED: tuple[str, mmap.mmap] | None = None
+
+
 def _worker_chunk(rows: Rows, task: BatchTask) -> tuple[Notes, float] | None:
     """Targets ``start`` … ``stop − 1`` of a batch of ``n`` in the shared ``segment``
     (:meth:`BatchAnswers.on_buffer`), solved in a worker, their answers written in place.
     Returns the rows' failure notes and the CPU seconds spent on them (this process's
     clock: the measured cost is the work's, whatever else the machine runs); None when the
-    segment is gone (the batch was withdrawn before this chunk started)."""
+    segment is gone (the batch was withdrawn before this chunk started).
+
+    The worker keeps the batch's segment mapped from its first chunk to the first chunk of
+    another batch (:func:`app.workers.shared_segment.still_there` checks, per chunk, that the
+    caller has not unlinked it), instead of mapping and unmapping it for every chunk
+    (~80 µs a chunk measured, docs/benchmarks.md); at most one batch's segment (unlinked by
+    then: its memory is freed when the mapping goes) stays mapped in an idle worker."""
+    global _MAPPED
     segment = rows[0]
-    try:
-        with shared_segment.attach(segment) as buffer:
-            return _solve_rows(buffer, rows, task)
-    except FileNotFoundError:
+    if _MAPPED is not None and _MAPPED[0] != segment:
+        _drop_mapping()
+    if _MAPPED is None:
+        try:
+            _MAPPED = (segment, shared_segment.map_segment(segment))
+        except FileNotFoundError:
+            return None
+    elif not shared_segment.still_there(segment):
+        _drop_mapping()
         return None
+    return _solve_rows(memoryview(_MAPPED[1]), rows, task)
+
+
+def _drop_mapping() -> None:
+    """Unmap the kept segment (its views are gone: none outlives :func:`_solve_rows`)."""
+    global _MAPPED
+    if _MAPPED is not None:
+        _, mapped = _MAPPED
+        _MAPPED = None
+        with contextlib.suppress(BufferError):  # a view still exported: freed when collected
+            mapped.close()
 
 
 def _solve_rows(buffer: memoryview, rows: Rows, task: BatchTask) -> tuple[Notes, float]:
@@ -205,7 +238,7 @@ def _solve_rows(buffer: memoryview, rows: Rows, task: BatchTask) -> tuple[Notes,
 
 def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> list[int]:
     """Sizes of consecutive chunks of ``n`` targets, decreasing (guided scheduling): each
-    about ``1 / (2 × processes)`` of the targets left, between :data:`CHUNK_MIN_MS` and
+    about ``1 / (GUIDE × processes)`` of the targets left, between :data:`CHUNK_MIN_MS` and
     :data:`CHUNK_MAX_MS` of work at ``cost_us`` per target, at most :data:`CHUNK_MAX`
     targets and a budget within :data:`CHUNK_BUDGET_MS` where possible."""
     most = min(CHUNK_MAX, math.floor(CHUNK_MAX_MS * 1e3 / cost_us))
@@ -215,7 +248,7 @@ def chunk_sizes(n: int, processes: int, cost_us: float, timeout_ms: float) -> li
     sizes = []
     left = n
     while left > 0:
-        size = min(left, most, max(least, math.ceil(left / (2 * processes))))
+        size = min(left, most, max(least, math.ceil(left / (GUIDE * processes))))
         if 2 * (left - size) < least and left <= most:  # no crumb after the last chunk
             size = left
         sizes.append(size)

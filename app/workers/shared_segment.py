@@ -4,8 +4,9 @@ The caller :func:`create` s a segment for one piece of work (a batch of IK targe
 answers, :mod:`app.workers.ik_batch`); it is always unlinked when the ``with`` block ends,
 however it ends (answers read, an error, cancellation, a dead worker), and the caller's
 ``multiprocessing`` resource tracker unlinks it should the caller itself be killed. Workers
-:func:`attach` to it by name without registering it anywhere: the segment is the caller's
-alone to unlink (the standard library's ``SharedMemory(name)`` would register it with the
+map it by name (:func:`map_segment`; :func:`still_there` tells whether the caller has
+unlinked it) without registering it anywhere: the segment is the caller's alone to unlink
+(the standard library's ``SharedMemory(name)`` would register it with the
 tracker again, which then reports a leak or unlinks it behind the caller's back).
 
 Names start with :data:`PREFIX` and the caller's PID (``/dev/shm/<name>`` on Linux), so a
@@ -50,25 +51,28 @@ def create(size: int) -> Iterator[shared_memory.SharedMemory]:
         segment.unlink()
 
 
-@contextlib.contextmanager
-def attach(name: str) -> Iterator[mmap.mmap]:
-    """The segment ``name`` mapped read-write in this process (not registered with any
-    resource tracker; never unlinked here).
+def map_segment(name: str) -> mmap.mmap:
+    """The segment ``name`` mapped read-write in this process, for the caller to close (not
+    registered with any resource tracker; never unlinked here).
 
     Raises
     ------
     FileNotFoundError
-        The segment is gone (its creator has unlinked it: the work was withdrawn).
+        The segment is gone (its creator has unlinked it).
     """
     fd = _posixshmem.shm_open("/" + name, os.O_RDWR, mode=0o600)
     try:
-        mapped = mmap.mmap(fd, os.fstat(fd).st_size)
+        return mmap.mmap(fd, os.fstat(fd).st_size)
     finally:
         os.close(fd)
+
+
+def still_there(name: str) -> bool:
+    """Whether the segment ``name`` still has its name (its creator has not unlinked it):
+    a mapping kept from before says nothing about that."""
     try:
-        yield mapped
-    finally:
-        try:
-            mapped.close()
-        except BufferError:  # a view still exported (an error mid-chunk): freed when collected
-            pass
+        fd = _posixshmem.shm_open("/" + name, os.O_RDONLY, mode=0o600)
+    except FileNotFoundError:
+        return False
+    os.close(fd)
+    return True

@@ -8,6 +8,7 @@ every field but the solve time is deterministic.
 
 from __future__ import annotations
 
+import pickle
 import threading
 
 import numpy as np
@@ -110,6 +111,9 @@ def test_chunks_by_measured_cost() -> None:
     sizes = ik_batch.chunk_sizes(4000, 2, 65.0, 5.0)
     most = min(int(ik_batch.CHUNK_MAX_MS * 1e3 / 65.0), int(ik_batch.CHUNK_BUDGET_MS / 5.0))
     assert sizes[0] == most and sizes[-1] < sizes[0] // 4
+    # each a processes-th of what is left (guided self-scheduling), within the bounds: 4000
+    # UR5-like targets (50 µs, 5 ms budget) in 12 chunks, the budget bound (400) first
+    assert ik_batch.chunk_sizes(4000, 2, 50.0, 5.0) == [400] * 9 + [200, 100, 100]
 
 
 def test_an_error_while_collecting_unlinks_the_segment(pool, registry) -> None:
@@ -134,6 +138,61 @@ def test_a_worker_finds_a_withdrawn_batch_gone(registry) -> None:
     with shared_segment.create(BatchAnswers.nbytes(4, 6)) as segment:
         name = segment.name
     assert ik_batch._worker_chunk((name, 4, 6, (0, 0), recipe.key, 0, 4), task) is None
+
+
+def _batch_segment(robot, targets: list[pin.SE3]):
+    """A segment laid out as :meth:`BatchPool.solve` lays one out: the targets, room for the
+    answers, the robot's pickled recipe after them; and the rows' first fields."""
+    recipe = ik_batch.RobotRecipe.of(robot)
+    pickled = pickle.dumps(recipe)
+    n, dof = len(targets), len(robot.joint_names)
+    at = BatchAnswers.nbytes(n, dof)
+    made = shared_segment.create(at + len(pickled))
+    segment = made.__enter__()
+    segment.buf[at : at + len(pickled)] = pickled
+    matrices, _ = BatchAnswers.on_buffer(segment.buf, n, dof)
+    matrices[:] = np.array([T.homogeneous for T in targets])
+    del matrices
+    return made, segment, (segment.name, n, dof, (at, len(pickled)), recipe.key)
+
+
+def test_a_worker_keeps_a_batch_mapped_between_its_chunks(registry, monkeypatch) -> None:
+    """Chunks of one batch reuse one mapping of its segment; a chunk of another batch maps
+    that batch's segment (its answers land there, not in the first); a chunk that comes
+    after its batch's segment was unlinked finds it gone (None) even though the mapping
+    was kept, and the mapping is dropped. Answers are the calling thread's."""
+    monkeypatch.setattr(ik_batch, "_MAPPED", None)
+    robot = registry.get("ur5")
+    task = BatchTask(robot.mid_range(), IKOptions(frame="tool0", max_iterations=400))
+    first = _targets(robot, "tool0", 8, seed=5)[:4]
+    second = _targets(robot, "tool0", 9, seed=6)[:6]
+    made_a, seg_a, rows_a = _batch_segment(robot, first)
+    made_b, seg_b, rows_b = _batch_segment(robot, second)
+    try:
+        assert ik_batch._worker_chunk((*rows_a, 0, 2), task) is not None
+        kept = ik_batch._MAPPED
+        assert kept is not None and kept[0] == seg_a.name
+        assert ik_batch._worker_chunk((*rows_a, 2, 4), task) is not None
+        assert ik_batch._MAPPED is kept  # the same mapping, not a new one
+        assert ik_batch._worker_chunk((*rows_b, 0, 6), task) is not None
+        assert ik_batch._MAPPED is not None and ik_batch._MAPPED[0] == seg_b.name
+        assert kept[1].closed  # the first batch's mapping was dropped
+        for segment, targets in ((seg_a, first), (seg_b, second)):
+            there = BatchAnswers.on_buffer(segment.buf, len(targets), 6)[1].copy()
+            here = solve_targets(robot, targets, task)
+            for name in EXACT:
+                assert np.array_equal(getattr(there, name), getattr(here, name)), name
+    finally:
+        made_a.__exit__(None, None, None)
+    try:  # the kept mapping of the first batch is gone; b is kept, then unlinked
+        assert ik_batch._worker_chunk((*rows_a, 0, 2), task) is None
+        assert ik_batch._MAPPED is None
+        assert ik_batch._worker_chunk((*rows_b, 0, 1), task) is not None
+    finally:
+        made_b.__exit__(None, None, None)
+    assert ik_batch._worker_chunk((*rows_b, 1, 2), task) is None  # kept, but unlinked
+    assert ik_batch._MAPPED is None
+    assert not leftover_segments()
 
 
 def test_answers_on_a_buffer_are_shared_and_copied_out() -> None:
