@@ -41,7 +41,7 @@ from app.kinematics.jacobian import frame_jacobian_by_id
 from app.kinematics.models import RobotModel
 
 if TYPE_CHECKING:
-    from app.kinematics.paths.follow import PathPoint
+    from app.kinematics.paths.result import PathPoint
 
 #: Smallest singular value of the dimensionless task Jacobian below which a point is called
 #: singular: position rows in chain lengths per rad (per chain length for a prismatic

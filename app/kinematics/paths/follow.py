@@ -45,19 +45,14 @@ local attempt accepted, the middle within half ``max_deviation``) and hands it t
 walk above, so the points are those of the per-point walk. The deadline is then read
 before each run of at most :data:`WALK_RUN` waypoints (~0.1 ms of compiled work), not
 before each of them.
-
-Why one module: the walk's state (:class:`_Walk`), its steps (local attempt, halving,
-fallback, densification) and the loop over the waypoints share the walk's private state
-and call each other; split, they would import each other.
 """
 
 from __future__ import annotations
 
-import math
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 import pinocchio as pin
@@ -73,7 +68,9 @@ from app.kinematics.ik.search import Clock
 from app.kinematics.models import RobotModel
 from app.kinematics.paths.failures import Guard, PathFailure, classify, residuals
 from app.kinematics.paths.local import LOCAL_ITERATIONS, LocalSolver, verify
-from app.kinematics.paths.segments import CartesianPath, Samples, Target, check_max_step
+from app.kinematics.paths.options import PathOptions
+from app.kinematics.paths.result import PathPoint, PathResult
+from app.kinematics.paths.segments import CartesianPath, Samples, Target
 
 __all__ = ["PathFailure", "PathOptions", "PathPoint", "PathResult", "follow", "start_pose"]
 
@@ -91,68 +88,6 @@ MIDDLE_FIRST = (0.5, 0.25, 0.75)
 MIN_SOLVE_MS = 0.1
 #: Most waypoints the compiled walk takes between two readings of the deadline's clock.
 WALK_RUN = 16
-
-
-@dataclass(frozen=True, slots=True)
-class PathOptions:
-    """How to follow a path (validated on construction, InvalidInputError naming the field).
-
-    Attributes
-    ----------
-    max_step
-        (position m, rotation rad): the most two consecutive waypoints of the sampled path
-        differ by.
-    max_joint_step
-        The most any joint may move between two consecutive points (rad or m).
-    max_deviation
-        (position m, rotation rad): the most the frame may stray from the path while the
-        joints move linearly between two points; points are inserted until it holds.
-    branch
-        The branch label the start must be on (:func:`branch_of`); None: any. Every point
-        keeps the start's label either way.
-    """
-
-    max_step: tuple[float, float] = (0.01, 0.05)
-    max_joint_step: float = 0.1
-    max_deviation: tuple[float, float] = (1e-3, 1e-2)
-    branch: str | None = None
-
-    def __post_init__(self) -> None:
-        check_max_step(float(self.max_step[0]), float(self.max_step[1]), "max_step")
-        if not (math.isfinite(self.max_joint_step) and self.max_joint_step > 0.0):
-            raise InvalidInputError("must be positive and finite", "max_joint_step")
-        check_max_step(float(self.max_deviation[0]), float(self.max_deviation[1]), "max_deviation")
-
-
-@dataclass(slots=True)
-class PathPoint:
-    """One point of the answer: wire configuration, its pose errors against the path's pose
-    at ``s`` (m, rad), and ``s``."""
-
-    q: np.ndarray
-    position_error: float
-    orientation_error: float
-    s: float
-
-
-@dataclass(slots=True)
-class PathResult:
-    """Outcome of :func:`follow`.
-
-    ``points`` start with the start configuration (s = 0); ``fraction`` is the s of the last
-    one (1.0 when the path was completed); ``failure`` is None then. ``branch`` is the
-    start's label, ``waypoints`` the number of sampled waypoints (densified points come on
-    top), ``iterations`` the Jacobian evaluations of every IK solve, ``solve_time_ms`` the
-    wall time.
-    """
-
-    points: list[PathPoint]
-    fraction: float
-    failure: PathFailure | None
-    branch: str | None
-    waypoints: int
-    iterations: int
-    solve_time_ms: float
 
 
 #: A failed attempt: the IK result, its guard, the pose attempted and its s.
