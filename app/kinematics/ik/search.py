@@ -17,6 +17,7 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
@@ -27,6 +28,10 @@ from app.kinematics.ik.parameters import SolverParameters
 from app.kinematics.ik.precompute import k_smallest
 from app.kinematics.ik.problem import IKProblem, Status
 from app.kinematics.ik.ranking import Grouping, joint_distance, representatives
+
+if TYPE_CHECKING:
+    from app.kinematics.ik.precompute import IKChain
+    from app.kinematics.models import RobotModel
 
 #: The budget's clock (s): ``time.perf_counter`` unless the caller injects another.
 Clock = Callable[[], float]
@@ -79,6 +84,40 @@ def _within(q: list[float], lower: list[float], upper: list[float]) -> bool:
         if not lo <= v <= hi:
             return False
     return True
+
+
+def wire_candidate(
+    robot: RobotModel, ch: IKChain, q_seed: np.ndarray, qa: np.ndarray
+) -> np.ndarray:
+    """The wire configuration of chain configuration ``qa`` (k,): the seed with the active
+    joints replaced, continuous joints wrapped to (−π, π]."""
+    q = q_seed.copy()
+    q[ch.active] = qa
+    return robot.wrap(q) if robot.has_continuous else q
+
+
+def within_limits(ch: IKChain, q: np.ndarray) -> bool:
+    """Whether wire configuration ``q`` lies within every wire joint's limits (False for NaN)."""
+    return _within(q.tolist(), ch.wire_lower, ch.wire_upper)
+
+
+def frame_placement(robot: RobotModel, ch: IKChain, q: np.ndarray) -> pin.SE3:
+    """The chain frame's placement at wire configuration ``q`` in the root frame, by
+    Pinocchio (``forwardKinematics`` + ``updateFramePlacement`` on this thread's Data): the
+    independent check of every candidate, however it was found."""
+    model, data = robot.model, robot.data
+    pin.forwardKinematics(model, data, q if ch.wire_is_pin else robot.to_pin(q))
+    return pin.updateFramePlacement(model, data, ch.frame_id)
+
+
+def full_pose_error(T: pin.SE3, target: pin.SE3) -> tuple[float, float, float, float, float, float]:
+    """(x, y, z, a, b, c): T_t⁻¹·T = (R_tᵀR, R_tᵀ(p − p_t)) as its translation and the log3
+    of its rotation, in one Pinocchio call: the same two norms as p − p_t and log3(R R_tᵀ) in
+    world axes (m, rad)."""
+    E = target.actInv(T)
+    x, y, z = E.translation.tolist()
+    a, b, c = pin.log3(E.rotation).tolist()
+    return x, y, z, a, b, c
 
 
 def pose_errors(T: pin.SE3, target: pin.SE3) -> tuple[float, float, np.ndarray]:
@@ -176,25 +215,16 @@ class Search:
         ``updateFramePlacement`` of the frame, its errors against the target within the
         tolerances (on the checked components).
         """
-        robot = self.robot
-        q = self.q_seed.copy()
-        q[self.ch.active] = qa
-        if robot.has_continuous:
-            q = robot.wrap(q)
-        if not _within(q.tolist(), self.ch.wire_lower, self.ch.wire_upper):
+        robot, ch = self.robot, self.ch
+        q = wire_candidate(robot, ch, self.q_seed, qa)
+        if not within_limits(ch, q):
             if self.outside_limits is None:
                 self._note_outside_limits(q)
             return False
-        model, data, ch = robot.model, robot.data, self.ch
-        pin.forwardKinematics(model, data, q if ch.wire_is_pin else robot.to_pin(q))
-        T = pin.updateFramePlacement(model, data, ch.frame_id)
+        T = frame_placement(robot, ch, q)
         target = self.target
         if self.full_pose:
-            # T_t⁻¹·T = (R_tᵀR, R_tᵀ(p − p_t)): the same two norms as p − p_t and
-            # log3(R R_tᵀ) in world axes, in one Pinocchio call
-            E = target.actInv(T)
-            x, y, z = E.translation.tolist()
-            a, b, c = pin.log3(E.rotation).tolist()
+            x, y, z, a, b, c = full_pose_error(T, target)
             # hypot: no overflow of the squares (the errors of huge robots stay numbers)
             ep = ep_full = math.hypot(x, y, z)
             er = er_full = math.hypot(a, b, c)
@@ -226,9 +256,7 @@ class Search:
         robot = self.robot
         if not np.isfinite(q).all():
             return
-        model, data = robot.model, robot.data
-        pin.forwardKinematics(model, data, robot.to_pin(q))
-        T = pin.updateFramePlacement(model, data, self.ch.frame_id)
+        T = frame_placement(robot, self.ch, q)
         ep, er = self._checked(pose_errors(T, self.target)[2])
         if ep <= self.tol_p and er <= self.tol_r:
             self.outside_limits = outside_limits(robot, q, range(robot.n))

@@ -52,7 +52,15 @@ from app.kinematics.ik.query_kernel import (
     entry,
     new_query_state,
 )
-from app.kinematics.ik.search import IKResult, IKSolution, Search
+from app.kinematics.ik.search import (
+    IKResult,
+    IKSolution,
+    Search,
+    frame_placement,
+    full_pose_error,
+    wire_candidate,
+    within_limits,
+)
 
 if TYPE_CHECKING:
     from app.kinematics.ik.precompute import IKChain
@@ -61,7 +69,6 @@ if TYPE_CHECKING:
     from app.kinematics.models import RobotModel
 
 _hypot, _isfinite = math.hypot, math.isfinite
-_fk, _placement, _log3 = pin.forwardKinematics, pin.updateFramePlacement, pin.log3
 
 
 def verify(
@@ -74,18 +81,10 @@ def verify(
     T (``forwardKinematics`` + ``updateFramePlacement``) within the tolerances of ``target``
     on the errors ‖R_tᵀ(p − p_t)‖ = ‖p − p_t‖ and ‖log3(R_tᵀ R)‖ = ‖log3(R R_tᵀ)‖ (both
     finite); else None. The check of :meth:`.search.Search.offer` for the full pose."""
-    q = q_seed.copy()
-    q[ch.active] = qa
-    if robot.has_continuous:
-        q = robot.wrap(q)
-    for v, lo, hi in zip(q.tolist(), ch.wire_lower, ch.wire_upper, strict=True):
-        if not lo <= v <= hi:
-            return None
-    model, data = robot.model, robot.data
-    _fk(model, data, q if ch.wire_is_pin else robot.to_pin(q))
-    E = target.actInv(_placement(model, data, ch.frame_id))
-    x, y, z = E.translation.tolist()
-    a, b, c = _log3(E.rotation).tolist()
+    q = wire_candidate(robot, ch, q_seed, qa)
+    if not within_limits(ch, q):
+        return None
+    x, y, z, a, b, c = full_pose_error(frame_placement(robot, ch, q), target)
     ep, er = _hypot(x, y, z), _hypot(a, b, c)
     if not (ep <= tol_p and er <= tol_r and _isfinite(ep) and _isfinite(er)):
         return None
