@@ -35,6 +35,7 @@ branch code and manipulability (2,); ``d`` (N,) float32: the table distances; ``
 
 from __future__ import annotations
 
+import functools
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
@@ -220,16 +221,11 @@ def _closed_form(ur, H, lo, hi, qa):  # pragma: no cover
     return ANALYTIC
 
 
+@functools.cache
 def entry():
     """:func:`query`'s compiled entry point (:func:`app.kinematics.jit.direct`), found once
-    per process."""
-    global _ENTRY
-    if _ENTRY is None:
-        _ENTRY = direct(query, *_example())
-    return _ENTRY
-
-
-_ENTRY = None
+    per process (without building :func:`_example`'s arguments at every query)."""
+    return direct(query, *_example())
 
 
 def _example() -> tuple:
