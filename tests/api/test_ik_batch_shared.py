@@ -27,7 +27,8 @@ from app.kinematics.ik.batch import (
     target_rng,
 )
 from app.kinematics.ik.problem import IKOptions
-from app.workers import ik_batch, shared_segment
+from app.workers import batch_worker, ik_batch, shared_segment
+from app.workers.chunk_claims import ControlBlock
 from tests.api.ik_batch_segments import leftover_segments
 
 #: Every column compared exactly; the solve time is a clock reading.
@@ -111,9 +112,13 @@ def test_chunks_by_measured_cost() -> None:
     sizes = ik_batch.chunk_sizes(4000, 2, 65.0, 5.0)
     most = min(int(ik_batch.CHUNK_MAX_MS * 1e3 / 65.0), int(ik_batch.CHUNK_BUDGET_MS / 5.0))
     assert sizes[0] == most and sizes[-1] < sizes[0] // 4
-    # each a processes-th of what is left (guided self-scheduling), within the bounds: 4000
-    # UR5-like targets (50 µs, 5 ms budget) in 12 chunks, the budget bound (400) first
-    assert ik_batch.chunk_sizes(4000, 2, 50.0, 5.0) == [400] * 9 + [200, 100, 100]
+    # each a (GUIDE × processes)-th of what is left (guided self-scheduling), within the
+    # bounds: 4000 UR5-like targets (50 µs, 5 ms budget) in 20 chunks, the budget bound (400)
+    # first, down to the smallest (1 ms of work: 20 targets) and the crumb taken by the last
+    assert ik_batch.GUIDE == 2 and ik_batch.CHUNK_MIN_MS == 1.0
+    assert ik_batch.chunk_sizes(4000, 2, 50.0, 5.0) == [400] * 7 + [
+        300, 225, 169, 127, 95, 71, 54, 40, 30, 23, 20, 20, 26
+    ]  # fmt: skip
 
 
 def test_an_error_while_collecting_unlinks_the_segment(pool, registry) -> None:
@@ -131,68 +136,130 @@ def test_an_error_while_collecting_unlinks_the_segment(pool, registry) -> None:
 
 
 def test_a_worker_finds_a_withdrawn_batch_gone(registry) -> None:
-    """A chunk that starts after its batch's segment was unlinked does nothing (None)."""
+    """A drain that starts after its batch's segment was unlinked does nothing (None)."""
     robot = registry.get("ur5")
     task = BatchTask(robot.mid_range(), IKOptions(frame="tool0"))
     recipe = ik_batch.RobotRecipe.of(robot)
-    with shared_segment.create(BatchAnswers.nbytes(4, 6)) as segment:
-        name = segment.name
-    assert ik_batch._worker_chunk((name, 4, 6, (0, 0), recipe.key, 0, 4), task) is None
+    with shared_segment.create(BatchAnswers.nbytes(4, 6) + ControlBlock.nbytes(1, 2)) as seg:
+        name = seg.name
+    rows = (name, 4, 6, (0, 0), recipe.key, BatchAnswers.nbytes(4, 6), 1, 2)
+    assert batch_worker.worker_drain(rows, 0, task) is None
 
 
-def _batch_segment(robot, targets: list[pin.SE3]):
-    """A segment laid out as :meth:`BatchPool.solve` lays one out: the targets, room for the
-    answers, the robot's pickled recipe after them; and the rows' first fields."""
-    recipe = ik_batch.RobotRecipe.of(robot)
-    pickled = pickle.dumps(recipe)
-    n, dof = len(targets), len(robot.joint_names)
-    at = BatchAnswers.nbytes(n, dof)
-    made = shared_segment.create(at + len(pickled))
-    segment = made.__enter__()
-    segment.buf[at : at + len(pickled)] = pickled
-    matrices, _ = BatchAnswers.on_buffer(segment.buf, n, dof)
-    matrices[:] = np.array([T.homogeneous for T in targets])
-    del matrices
-    return made, segment, (segment.name, n, dof, (at, len(pickled)), recipe.key)
+class _Batch:
+    """A segment laid out as :meth:`BatchPool.solve` lays one out (the targets, room for the
+    answers, the robot's pickled recipe, the control block of chunks of ``sizes`` rows and
+    ``drains`` drains), its rows, and a control block on it; the targets written and the
+    first ``ready`` chunks published."""
+
+    def __init__(self, robot, targets, sizes: list[int], drains: int, ready: int) -> None:
+        recipe = ik_batch.RobotRecipe.of(robot)
+        pickled = pickle.dumps(recipe)
+        n, dof = len(targets), len(robot.joint_names)
+        at = BatchAnswers.nbytes(n, dof)
+        block_at = -(-(at + len(pickled)) // 8) * 8
+        self.made = shared_segment.create(block_at + ControlBlock.nbytes(len(sizes), drains))
+        self.segment = self.made.__enter__()
+        self.segment.buf[at : at + len(pickled)] = pickled
+        self.rows = (self.segment.name, n, dof, (at, len(pickled)), recipe.key, block_at,
+                     len(sizes), drains)  # fmt: skip
+        self.lock = threading.Lock()
+        self.block = ControlBlock(self.segment.buf, block_at, len(sizes), drains, self.lock)
+        self.block.lay_out(sizes)
+        self.n, self.dof, self.targets = n, dof, targets
+        self.write()
+        self.block.publish(ready)
+
+    def write(self) -> None:
+        matrices, _ = BatchAnswers.on_buffer(self.segment.buf, self.n, self.dof)
+        matrices[:] = np.array([T.homogeneous for T in self.targets])
+
+    def answers(self) -> BatchAnswers:
+        return BatchAnswers.on_buffer(self.segment.buf, self.n, self.dof)[1].copy()
+
+    def drain(self, drain: int, task: BatchTask):
+        return batch_worker.drain_chunks(memoryview(self.segment.buf), self.rows, drain, task,
+                                         self.lock)  # fmt: skip
+
+    def close(self) -> None:
+        self.block.release()
+        self.made.__exit__(None, None, None)
 
 
-def test_a_worker_keeps_a_batch_mapped_between_its_chunks(registry, monkeypatch) -> None:
-    """Chunks of one batch reuse one mapping of its segment; a chunk of another batch maps
-    that batch's segment (its answers land there, not in the first); a chunk that comes
-    after its batch's segment was unlinked finds it gone (None) even though the mapping
-    was kept, and the mapping is dropped. Answers are the calling thread's."""
-    monkeypatch.setattr(ik_batch, "_MAPPED", None)
+def test_drains_claim_every_chunk_once(registry) -> None:
+    """Two drains of one batch of 3 chunks, one after the other: the first claims and solves
+    every chunk (the answers are the calling thread's, the notes its rows'), the second finds
+    nothing left and is not marked started (the caller does not wait for it)."""
     robot = registry.get("ur5")
     task = BatchTask(robot.mid_range(), IKOptions(frame="tool0", max_iterations=400))
-    first = _targets(robot, "tool0", 8, seed=5)[:4]
-    second = _targets(robot, "tool0", 9, seed=6)[:6]
-    made_a, seg_a, rows_a = _batch_segment(robot, first)
-    made_b, seg_b, rows_b = _batch_segment(robot, second)
+    targets = _targets(robot, "tool0", 104, seed=5)[98:]  # 3 beyond reach among 6
+    batch = _Batch(robot, targets, [3, 2, 1], drains=2, ready=3)
     try:
-        assert ik_batch._worker_chunk((*rows_a, 0, 2), task) is not None
-        kept = ik_batch._MAPPED
-        assert kept is not None and kept[0] == seg_a.name
-        assert ik_batch._worker_chunk((*rows_a, 2, 4), task) is not None
-        assert ik_batch._MAPPED is kept  # the same mapping, not a new one
-        assert ik_batch._worker_chunk((*rows_b, 0, 6), task) is not None
-        assert ik_batch._MAPPED is not None and ik_batch._MAPPED[0] == seg_b.name
-        assert kept[1].closed  # the first batch's mapping was dropped
-        for segment, targets in ((seg_a, first), (seg_b, second)):
-            there = BatchAnswers.on_buffer(segment.buf, len(targets), 6)[1].copy()
-            here = solve_targets(robot, targets, task)
-            for name in EXACT:
-                assert np.array_equal(getattr(there, name), getattr(here, name)), name
+        notes, _, _ = batch.drain(0, task)
+        assert batch.drain(1, task)[0::2] == ({}, 0)
+        solved, started, done = batch.block.progress()
+        assert (solved, started.tolist(), done.tolist()) == (6, [1, 0], [1, 1, 1])
+        there, here = batch.answers(), solve_targets(robot, targets, task)
+        for name in EXACT:
+            assert np.array_equal(getattr(there, name), getattr(here, name)), name
+        assert notes == here.notes and len(notes) == 3
     finally:
-        made_a.__exit__(None, None, None)
-    try:  # the kept mapping of the first batch is gone; b is kept, then unlinked
-        assert ik_batch._worker_chunk((*rows_a, 0, 2), task) is None
-        assert ik_batch._MAPPED is None
-        assert ik_batch._worker_chunk((*rows_b, 0, 1), task) is not None
-    finally:
-        made_b.__exit__(None, None, None)
-    assert ik_batch._worker_chunk((*rows_b, 1, 2), task) is None  # kept, but unlinked
-    assert ik_batch._MAPPED is None
+        batch.close()
     assert not leftover_segments()
+
+
+def test_a_withdrawn_batch_stops_its_drain_between_chunks(registry, monkeypatch) -> None:
+    """The batch withdrawn (cancelled, the pool stopping) while its drain solves the first of
+    3 chunks: that chunk is finished and marked done, no other is claimed, their rows stay
+    unsolved."""
+    robot = registry.get("ur5")
+    task = BatchTask(robot.mid_range(), IKOptions(frame="tool0", max_iterations=400))
+    targets = _targets(robot, "tool0", 8, seed=6)[:6]
+    batch = _Batch(robot, targets, [2, 2, 2], drains=2, ready=3)
+    solve = batch_worker.solve_into
+
+    def solve_then_withdraw(*args, **kwargs) -> None:
+        solve(*args, **kwargs)
+        batch.block.cancel()
+
+    monkeypatch.setattr(batch_worker, "solve_into", solve_then_withdraw)
+    try:
+        batch.drain(0, task)
+        solved, started, done = batch.block.progress()
+        assert (solved, started.tolist(), done.tolist()) == (2, [1, 0], [1, 0, 0])
+        there = batch.answers()
+        assert there.success[:2].all() and not there.success[2:].any()
+        assert not there.q[2:].any()
+    finally:
+        batch.close()
+
+
+def test_a_drain_waits_for_its_chunk_to_be_written(registry) -> None:
+    """A drain that claims a chunk whose targets the caller has not published yet waits for
+    them: started while nothing is published, it solves the targets written after it began
+    (zeros before), and its answers are the calling thread's."""
+    robot = registry.get("ur5")
+    task = BatchTask(robot.mid_range(), IKOptions(frame="tool0", max_iterations=400))
+    targets = _targets(robot, "tool0", 8, seed=7)[:5]
+    batch = _Batch(robot, targets, [3, 2], drains=1, ready=0)
+    BatchAnswers.on_buffer(batch.segment.buf, batch.n, batch.dof)[0][:] = 0.0  # not written
+    thread = threading.Thread(target=batch.drain, args=(0, task))
+    try:
+        thread.start()
+        event = threading.Event()
+        while not batch.block.progress()[1][0]:  # the drain has begun and claims chunk 0
+            event.wait(0.001)
+        batch.write()
+        batch.block.publish(2)
+        thread.join(timeout=60)
+        assert not thread.is_alive()
+        there, here = batch.answers(), solve_targets(robot, targets, task)
+        for name in EXACT:
+            assert np.array_equal(getattr(there, name), getattr(here, name)), name
+    finally:
+        batch.block.cancel()
+        thread.join(timeout=60)
+        batch.close()
 
 
 def test_answers_on_a_buffer_are_shared_and_copied_out() -> None:
@@ -215,15 +282,15 @@ def test_answers_on_a_buffer_are_shared_and_copied_out() -> None:
 
 def test_shutdown_during_a_batch_unlinks_the_segment(pool, registry, monkeypatch) -> None:
     """The pool stopped (application shutdown) while a batch of slow targets runs, in 128
-    chunks of 2 (at most 5 start: 2 running, 3 queued; the rest are withdrawn): the batch
-    fails with a 503 error naming ``targets`` and its segment is unlinked; the pool serves
-    the next batch with fresh workers."""
+    chunks of 2 (its 2 drains stop claiming chunks once the pool withdraws the batch; each
+    finishes the chunk it solves): the batch fails with a 503 error naming ``targets`` and
+    its segment is unlinked; the pool serves the next batch with fresh workers."""
     monkeypatch.setattr(ik_batch, "chunk_sizes", lambda n, *_: [2] * (n // 2))
     robot = registry.get("panda")
     # Beyond reach but inside the reach bound: each target searches its whole 50 ms budget
     # (1.0 m is outside the bound: classified unreachable in ~10 ms, and a batch of those
     # could end before a loaded machine's test thread sees its chunks queued). 256 of them
-    # are ≥ 6 s of work on two workers; the shutdown waits for the two running chunks only.
+    # are ≥ 6 s of work on two workers; the shutdown waits for the two chunks being solved.
     slow = [pin.SE3(np.eye(3), np.array([0.0, 0.95, 0.333]))] * 256
     options = IKOptions(frame="panda_link8", mode="position", timeout_ms=50.0)
     task = BatchTask(robot.mid_range(), options)
