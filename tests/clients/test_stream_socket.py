@@ -53,12 +53,60 @@ def test_messages_keep_their_type_and_bytes() -> None:
     with server(echo) as (url, _):
         ws = CallingThreadWebSocket(url)
         try:
-            for message in ["héllo", b"\x00\xff" * 40, "", b"", "x" * 70_000, bytes(200_000)]:
+            # every length encoding both ways, at its bounds: 7-bit (≤ 125), 16-bit (126 …
+            # 65535), 64-bit (≥ 65536); the server checks the client's masking
+            sizes = [0, 1, 125, 126, 127, 65_535, 65_536, 200_000]
+            binary = [bytes((i * 7) % 256 for i in range(n)) for n in sizes]
+            text = ["é" * (n // 2) for n in sizes]  # 2 bytes each in UTF-8
+            for message in ["héllo", b"\x00\xff" * 40, "", b"", *binary, *text]:
                 ws.send(message)
                 got = ws.recv()
                 assert type(got) is type(message) and got == message
         finally:
             ws.close()
+
+
+def test_messages_that_come_together_are_taken_in_order() -> None:
+    """200 messages sent at once by the server (many whole frames, and frames cut, in one
+    read of the socket): every one received, in order, with its type."""
+
+    def burst(ws: ServerConnection) -> None:
+        ws.recv()
+        for i in range(200):
+            ws.send(f"t{i}" if i % 3 == 0 else i.to_bytes(4, "little") * (1 + i % 50))
+        ws.recv()
+
+    with server(burst) as (url, _):
+        ws = CallingThreadWebSocket(url)
+        try:
+            ws.send("go")
+            for i in range(200):
+                want = f"t{i}" if i % 3 == 0 else i.to_bytes(4, "little") * (1 + i % 50)
+                assert ws.recv() == want, i
+            ws.send("done")
+        finally:
+            ws.close()
+
+
+def test_invalid_utf8_text_fails_the_connection_as_websockets_does() -> None:
+    """A text frame that is not UTF-8: the connection fails with 1007, as ``websockets``'
+    own client fails it."""
+
+    def bad(ws: ServerConnection) -> None:
+        ws.send(b"ok", text=True)
+        ws.send(b"\xff\xfe", text=True)
+        try:
+            ws.recv()
+        except ConnectionClosed:
+            pass
+
+    with server(bad) as (url, _):
+        ws = CallingThreadWebSocket(url)
+        assert ws.recv() == "ok"
+        with pytest.raises(ConnectionClosed) as closed:
+            ws.recv()
+        assert closed.value.sent is not None and closed.value.sent.code == 1007
+        ws.close()
 
 
 def test_fragmented_messages_are_joined_and_pings_answered() -> None:
