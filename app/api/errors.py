@@ -24,6 +24,7 @@ from app.kinematics.errors import (
     ForbiddenError,
     InvalidInputError,
     KinematicsError,
+    MissingInertiaError,
     UnavailableError,
     UnknownNameError,
 )
@@ -171,6 +172,7 @@ _STATUS = {
     ConflictError: (409, "conflict"),
     ForbiddenError: (403, "forbidden"),
     InvalidInputError: (422, "invalid-input"),
+    MissingInertiaError: (422, "missing-inertia"),
     UnavailableError: (503, "unavailable"),
 }
 

@@ -72,3 +72,20 @@ class Cancelled(Exception):  # noqa: N818 - an outcome, not a fault of the reque
     answer. Long computations take an optional ``threading.Event`` (``cancel``) and raise
     this once it is set.
     """
+
+
+class MissingInertiaError(KinematicsError):
+    """The robot cannot answer a dynamics question: a link that moves carries no inertia.
+
+    Torques computed from zero or default inertias would be wrong without a sign of it, so
+    the core refuses (the API answers 422 ``missing-inertia``, naming the link).
+    """
+
+    def __init__(self, link: str) -> None:
+        self.link = link
+        super().__init__(
+            f"link {link!r} has no inertia (its URDF <inertial> is missing, or its mass and "
+            "inertia are 0): dynamics need the mass, centre of mass and inertia of every link "
+            "that moves; give them in the URDF (or the DH table's mass, com and inertia)",
+            "robot_id",
+        )

@@ -221,7 +221,9 @@ def _joint_order(root: Element, specs: Mapping[str, MimicSpec], field: str) -> l
     return order
 
 
-def build_model(urdf_text: str, root: Element | None = None, field: str = "urdf") -> pin.Model:
+def build_model(
+    urdf_text: str, root: Element | None = None, field: str = "urdf", *, mimic: bool = True
+) -> pin.Model:
     """The Pinocchio model of ``urdf_text`` with its mimic joints (module doc).
 
     Parameters
@@ -233,6 +235,12 @@ def build_model(urdf_text: str, root: Element | None = None, field: str = "urdf"
         (:func:`app.kinematics.xmldoc.parse_literal_xml`), when the caller has it.
     field
         The request field a refusal names.
+    mimic
+        False: every follower stays a joint of its own (with its own configuration and
+        velocity entry, a continuous follower an unbounded revolute joint), in the same
+        order as with ``mimic=True``: the model the dynamics map wire values onto
+        (:mod:`app.kinematics.dynamics`), since not every Pinocchio algorithm honours a
+        mimic joint.
 
     Raises
     ------
@@ -257,6 +265,8 @@ def build_model(urdf_text: str, root: Element | None = None, field: str = "urdf"
         model = pin.buildModelFromXML(urdf_text, mimic=False)
     else:
         model = _build_copy(root, order, continuous)
+    if not mimic:
+        return model
     for spec in sorted(specs.values(), key=lambda s: model.getJointId(s.follower)):
         model = pin.transformJointIntoMimic(
             model,

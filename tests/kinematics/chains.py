@@ -158,3 +158,35 @@ COLLIDING_URDF = """<?xml version="1.0"?>
   <joint name="tip_joint" type="fixed"><parent link="link2"/><child link="tip"/>
     <origin xyz="0.6 0 0"/></joint>
 </robot>"""
+
+
+# The vertical 2-link arm of the dynamics tests (Spong §7.4), lengths L1, L2: masses, centres
+# of mass along each link, inertias about them (about the joint axis), effort limits.
+M1, M2 = 3.0, 2.0  # link masses (kg)
+C1, C2 = 0.4, 0.25  # centres of mass along each link (m)
+I1, I2 = 0.21, 0.07  # inertias about each centre of mass, about the joint axis (kg·m²)
+E1, E2 = 150.0, 60.0  # effort limits (N·m)
+
+
+def vertical_2link() -> str:
+    """Two revolute joints about −y (so positive angles lift the arm), links along x: the
+    arm moves in the vertical x–z plane, angles measured from the horizontal."""
+
+    def link(name: str, m: float, c: float, i: float) -> str:
+        return f"""<link name="{name}"><inertial><origin xyz="{c} 0 0"/><mass value="{m}"/>
+  <inertia ixx="0.01" ixy="0" ixz="0" iyy="{i}" iyz="0" izz="0.02"/></inertial></link>"""
+
+    return f"""<?xml version="1.0"?>
+<robot name="vertical2">
+  <link name="base"/>
+  {link("link1", M1, C1, I1)}
+  {link("link2", M2, C2, I2)}
+  <link name="tip"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="link1"/>
+    <axis xyz="0 -1 0"/><limit lower="-3" upper="3" velocity="2" effort="{E1}"/></joint>
+  <joint name="j2" type="revolute"><parent link="link1"/><child link="link2"/>
+    <origin xyz="{L1} 0 0"/><axis xyz="0 -1 0"/>
+    <limit lower="-3" upper="3" velocity="2" effort="{E2}"/></joint>
+  <joint name="tip_joint" type="fixed"><parent link="link2"/><child link="tip"/>
+    <origin xyz="{L2} 0 0"/></joint>
+</robot>"""
