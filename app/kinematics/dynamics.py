@@ -207,29 +207,41 @@ class _Recipe:
         self.model = full
         self.lower = np.tril_indices(full.nv, -1)
         self.G = np.zeros((full.nv, robot.n))
-        self.q_slots: list[tuple[int, bool]] = []  # per wire joint: idx_q, continuous
+        plain_q, plain_w, cont_q, cont_w = [], [], [], []
         for j in robot.joints:
             jm = full.joints[full.getJointId(j.name)]
             self.G[jm.idx_v, j.index] = 1.0
-            self.q_slots.append((jm.idx_q, jm.nq == 2))
-        self.followers: list[tuple[int, int, float, float]] = []  # idx_q, leader, mult, offset
+            if jm.nq == 2:
+                cont_q.append(jm.idx_q)
+                cont_w.append(j.index)
+            else:
+                plain_q.append(jm.idx_q)
+                plain_w.append(j.index)
+        follow_q, leaders, mult, off = [], [], [], []
         for m in robot.mimic_joints:
             jm = full.joints[full.getJointId(m.name)]
             self.G[jm.idx_v, m.leader_index] = m.multiplier
-            self.followers.append((jm.idx_q, m.leader_index, m.multiplier, m.offset))
+            follow_q.append(jm.idx_q)
+            leaders.append(m.leader_index)
+            mult.append(m.multiplier)
+            off.append(m.offset)
+        # where each wire value, continuous angle and follower goes in the configuration
+        self.plain = (np.array(plain_q, dtype=int), np.array(plain_w, dtype=int))
+        self.cont = (np.array(cont_q, dtype=int), np.array(cont_w, dtype=int))
+        self.follow = (np.array(follow_q, dtype=int), np.array(leaders, dtype=int))
+        self.mult, self.offset = np.array(mult), np.array(off)
 
     def q(self, robot: RobotModel, q: np.ndarray) -> np.ndarray:
         """The model's configuration for the wire configuration ``q``."""
         if not self.mimic:
             return robot.to_pin(q)
-        out = np.zeros(self.model.nq)
-        for (iq, cont), v in zip(self.q_slots, q.tolist(), strict=True):
-            if cont:
-                out[iq], out[iq + 1] = math.cos(v), math.sin(v)
-            else:
-                out[iq] = v
-        for iq, leader, mult, off in self.followers:
-            out[iq] = mult * q[leader] + off
+        out = np.empty(self.model.nq)
+        out[self.plain[0]] = q[self.plain[1]]
+        if self.cont[0].size:
+            th = q[self.cont[1]]
+            out[self.cont[0]] = np.cos(th)
+            out[self.cont[0] + 1] = np.sin(th)
+        out[self.follow[0]] = self.mult * q[self.follow[1]] + self.offset
         return out
 
     def v(self, v: np.ndarray) -> np.ndarray:
