@@ -10,7 +10,7 @@ LOCK     := requirements-dev.lock
 RT_LOCK  := requirements.lock
 IMAGE    ?= denavit
 
-.PHONY: install install-run run test lint browser viewer-vendor bench bench-env lock-bench openapi lock image container-check compose-check clean clients typescript openapi-lint-tools openapi-lint examples
+.PHONY: install install-run run test lint browser viewer-vendor bench bench-env rtb-fixtures lock-bench openapi lock image container-check compose-check clean clients typescript openapi-lint-tools openapi-lint examples
 
 install: $(STAMP)
 
@@ -107,6 +107,12 @@ $(BENCH_STAMP): $(BENCH_LOCK)
 	test -x $(BENCH_VENV)/bin/python || $(PYTHON) -m venv $(BENCH_VENV)
 	$(BENCH_VENV)/bin/python -m pip install --quiet --no-deps --require-hashes -r $(BENCH_LOCK)
 	touch $(BENCH_STAMP)
+
+# The Robotics Toolbox's dynamics of its DH Puma 560 and UR5 (rne, gravload, inertia,
+# coriolis at fixed-seed states) as the fixture tests/kinematics/test_dynamics_rtb.py
+# compares the service with (bench/rtb_dynamics.py, run by the bench venv's python).
+rtb-fixtures: bench-env
+	$(BENCH_VENV)/bin/python bench/rtb_dynamics.py tests/kinematics/data/rtb_dynamics.json
 
 lock-bench: install
 	$(BIN)/uv pip compile --quiet --python-version 3.11 --python-platform x86_64-manylinux_2_28 \

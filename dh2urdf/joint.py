@@ -1,5 +1,6 @@
-"""A DH table's rows and frames: :class:`DHJoint` (one row, SI), :class:`Transform` (a fixed
-base or tool frame) and the value sets a table's fields take. The table itself is
+"""A DH table's rows and frames: :class:`DHJoint` (one row, SI), :class:`LinkDynamics` (a
+row's optional mass, centre of mass and inertia), :class:`Transform` (a fixed base or tool
+frame) and the value sets a table's fields take. The table itself is
 :class:`dh2urdf.table.DHTable`; the checks that build these from a document are in
 :mod:`dh2urdf.parse`.
 """
@@ -43,6 +44,35 @@ class Transform:
 
 
 @dataclass(frozen=True, slots=True)
+class LinkDynamics:
+    """The rigid body that row i moves (link i), in the DH frame at the END of the row.
+
+    That frame is frame i of the chain (world pose ``B·A_1⋯A_i``, the URDF link ``dh_i``),
+    the frame the Robotics Toolbox's and Corke's ``r`` and ``I`` are given in, in both
+    conventions.
+
+    Attributes
+    ----------
+    mass : float
+        Mass (kg), ≥ 0.
+    com : tuple of float
+        Centre of mass (m) in frame i.
+    inertia : tuple of float
+        Rotational inertia about the centre of mass, in frame i's axes (kg·m²), as the six
+        URDF entries ``(ixx, ixy, ixz, iyy, iyz, izz)``; all zero for a point mass.
+    """
+
+    mass: float
+    com: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    inertia: tuple[float, float, float, float, float, float] = (0.0,) * 6
+
+    def inertia_matrix(self) -> np.ndarray:
+        """The 3×3 symmetric rotational inertia (kg·m², about the com, frame i's axes)."""
+        ixx, ixy, ixz, iyy, iyz, izz = self.inertia
+        return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+
+
+@dataclass(frozen=True, slots=True)
 class DHJoint:
     """One row of a DH table, in SI units (m, rad).
 
@@ -63,6 +93,9 @@ class DHJoint:
         Velocity limit (rad/s or m/s).
     effort : float
         Effort limit (N·m or N).
+    dynamics : LinkDynamics or None
+        The mass, centre of mass and inertia of the link the row moves; ``None`` when the
+        row gives none (the URDF link then has no ``<inertial>``).
     """
 
     name: str
@@ -75,6 +108,7 @@ class DHJoint:
     upper: float | None
     velocity: float
     effort: float
+    dynamics: LinkDynamics | None = None
 
     @property
     def is_prismatic(self) -> bool:

@@ -15,12 +15,15 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
+import numpy as np
+
 from dh2urdf.errors import DHError
 from dh2urdf.joint import (
     CONVENTIONS,
     DEFAULT_GEOMETRY_RADIUS,
     JOINT_TYPES,
     DHJoint,
+    LinkDynamics,
     Transform,
 )
 from dh2urdf.loaders import HugeInt
@@ -40,6 +43,16 @@ MAX_DESCRIPTION_LENGTH = 1000
 #: Largest magnitude of a length (m, after unit conversion) or an angle (rad) in a table.
 MAX_ABS_VALUE = 1e6
 
+#: Largest link mass (kg) a row may give.
+MAX_LINK_MASS = 1e6
+#: Largest |entry| (kg·m²) of a row's rotational inertia.
+MAX_LINK_INERTIA = 1e6
+#: Tolerance (relative to the largest |entry|) of the inertia checks: positive
+#: semi-definiteness and the triangle inequality of the principal moments.
+INERTIA_TOLERANCE = 1e-9
+#: The six entries of a row's ``inertia``, in order (URDF's ``<inertia>`` attributes).
+INERTIA_ENTRIES = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+
 _TOP_KEYS = ("name", "description", "convention", "units", "base", "tool", "geometry", "joints")
 _JOINT_KEYS = (
     "name",
@@ -52,6 +65,9 @@ _JOINT_KEYS = (
     "upper",
     "velocity",
     "effort",
+    "mass",
+    "com",
+    "inertia",
 )
 _TRANSFORM_KEYS = ("xyz", "rpy")
 
@@ -274,6 +290,8 @@ def _parse_joint(
     elif effort <= 0:
         raise DHError(f"{path}.effort", f"must be > 0, got {_fmt(effort)}")
 
+    dynamics = _parse_dynamics(m, path, length)
+
     return DHJoint(
         name=name,
         type=jtype,
@@ -285,7 +303,75 @@ def _parse_joint(
         upper=upper,
         velocity=velocity,
         effort=effort,
+        dynamics=dynamics,
     )
+
+
+def _parse_dynamics(
+    m: Mapping[str, Any], path: str, length: Callable[[float], float]
+) -> LinkDynamics | None:
+    """A row's ``mass`` (kg), ``com`` (table length units, frame i) and ``inertia`` (six
+    entries, kg·m², about the com in frame i's axes); ``None`` when the row has none."""
+    given = [key for key in ("mass", "com", "inertia") if m.get(key) is not None]
+    if not given:
+        return None
+    mass = _optional_number(m, "mass", path)
+    if mass is None:
+        raise DHError(f"{path}.mass", f"field required when the row gives {given[0]}")
+    if mass < 0:
+        raise DHError(f"{path}.mass", f"must be >= 0 kg, got {_fmt(mass)}")
+    if mass > MAX_LINK_MASS:
+        raise DHError(f"{path}.mass", f"above {MAX_LINK_MASS:g} kg is not accepted, got {mass!r}")
+    com = (0.0, 0.0, 0.0)
+    if m.get("com") is not None:
+        com = _triple(m["com"], f"{path}.com", length, "m")
+    inertia = (0.0,) * 6
+    if m.get("inertia") is not None:
+        inertia = _inertia(m["inertia"], f"{path}.inertia")
+    return LinkDynamics(mass=mass + 0.0, com=com, inertia=inertia)
+
+
+_SIX = "expected a list of 6 numbers [ixx, ixy, ixz, iyy, iyz, izz] (kg·m²),"
+
+
+def _inertia(value: Any, path: str) -> tuple[float, float, float, float, float, float]:
+    """Six finite entries ``[ixx, ixy, ixz, iyy, iyz, izz]`` (kg·m²) of a physical rigid
+    body's rotational inertia: bounded, diagonal ≥ 0, positive semi-definite, principal
+    moments obeying the triangle inequality (each at most the sum of the other two)."""
+    if isinstance(value, str | bytes | Mapping) or not isinstance(value, Sequence):
+        raise DHError(path, f"{_SIX} got {_describe(value)}")
+    if len(value) != 6:
+        raise DHError(path, f"{_SIX} got {len(value)} items")
+    entries = [_number(v, f"{path}[{i}]") + 0.0 for i, v in enumerate(value)]
+    for i, v in enumerate(entries):
+        if abs(v) > MAX_LINK_INERTIA:
+            raise DHError(
+                f"{path}[{i}]",
+                f"magnitude above {MAX_LINK_INERTIA:g} kg·m² is not accepted, got {v!r}",
+            )
+    for i in (0, 3, 5):
+        if entries[i] < 0:
+            raise DHError(
+                f"{path}[{i}]", f"{INERTIA_ENTRIES[i]} must be >= 0 kg·m², got {_fmt(entries[i])}"
+            )
+    ixx, ixy, ixz, iyy, iyz, izz = entries
+    matrix = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+    scale = max(abs(v) for v in entries)
+    tolerance = INERTIA_TOLERANCE * scale
+    moments = np.linalg.eigvalsh(matrix)  # ascending
+    if moments[0] < -tolerance:
+        raise DHError(
+            path,
+            "not positive semi-definite (principal moments "
+            f"{', '.join(f'{p:.6g}' for p in moments)} kg·m²)",
+        )
+    if moments[0] + moments[1] < moments[2] - tolerance:
+        raise DHError(
+            path,
+            "principal moments break the triangle inequality of a rigid body "
+            f"({moments[0]:.6g} + {moments[1]:.6g} < {moments[2]:.6g} kg·m²)",
+        )
+    return (ixx, ixy, ixz, iyy, iyz, izz)
 
 
 def table_fields(data: Any) -> dict[str, Any]:

@@ -22,6 +22,17 @@ are in table units (default ±180° for revolute joints, required for prismatic 
 forbidden for continuous ones); ``velocity`` is in table units per second (default π rad/s
 or 1 m/s); ``effort`` is always SI, N·m or N (default 100).
 
+Optional per-row dynamics of the link the row moves (link i), all in the DH frame at the
+END of the row's transform (frame i, world pose ``B·A_1⋯A_i``, as the Robotics Toolbox's and
+Corke's ``r`` and ``I``): ``mass`` (kg, always SI, ≥ 0), ``com`` [x, y, z] (table length
+units) and ``inertia`` [ixx, ixy, ixz, iyy, iyz, izz] (kg·m², always SI, about the com in
+frame i's axes; a physical rigid body: positive semi-definite, each principal moment at most
+the sum of the other two). ``com`` and ``inertia`` default to 0 (a point mass at frame i's
+origin) and need ``mass``. A row without them gives a link without ``<inertial>``::
+
+      - {a: 0.4318, alpha: 0, d: 0, theta: 0, mass: 17.4, com: [-0.3638, 0.006, 0.2275],
+         inertia: [0.13, 0, 0, 0.524, 0, 0.539]}
+
 Every value is converted to SI (m, rad) when the table is built. Errors raise
 :class:`DHError`, whose message names the offending field as a path into the document with
 0-based list indices, e.g. ``joints[2].lower: lower (10) > upper (5)``. The checks live in
@@ -41,6 +52,7 @@ from dh2urdf.joint import (
     Convention,
     DHJoint,
     JointType,
+    LinkDynamics,
     Transform,
 )
 from dh2urdf.loaders import format_for_path, load_json, load_yaml
@@ -51,6 +63,7 @@ __all__ = [
     "JointType",
     "DHJoint",
     "DHTable",
+    "LinkDynamics",
     "Transform",
     "CONVENTIONS",
     "JOINT_TYPES",
@@ -92,6 +105,11 @@ class DHTable:
     def dof(self) -> int:
         """Number of actuated joints (rows)."""
         return len(self.joints)
+
+    @property
+    def has_dynamics(self) -> bool:
+        """Whether any row gives its link's mass (and so the URDF any ``<inertial>``)."""
+        return any(j.dynamics is not None for j in self.joints)
 
     @property
     def joint_names(self) -> list[str]:
@@ -166,6 +184,10 @@ class DHTable:
                 row["upper"] = j.upper
             row["velocity"] = j.velocity
             row["effort"] = j.effort
+            if j.dynamics is not None:
+                row["mass"] = j.dynamics.mass
+                row["com"] = list(j.dynamics.com)
+                row["inertia"] = list(j.dynamics.inertia)
             joints.append(row)
         doc: dict[str, Any] = {"name": self.name}
         if self.description:

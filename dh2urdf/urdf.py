@@ -17,6 +17,14 @@ In URDF a joint's motion comes *after* its origin, so each row is split such tha
     Rz(q + θ_off) = Rz(θ_off)·Rz(q) commutes with Tz(d) and Tz(q + d_off) = Tz(d_off)·Tz(q):
     ``O_i = Rx(α)·Tx(a)·Rz(θ_off)·Tz(d_off)`` and ``F_i = I``.
 
+Dynamics: a row's :class:`~dh2urdf.joint.LinkDynamics` (mass, com and inertia in frame i,
+the DH frame at the END of the row, i.e. the link ``dh_i``) becomes the ``<inertial>`` of
+``link_i``, the moving body, whose frame is ``dh_i·F_i⁻¹``. Its origin is therefore
+``F_i·Tr(com)`` with the rotation of ``F_i`` (the inertia tensor keeps frame i's axes):
+``standard`` xyz = (a·cos θ_off, a·sin θ_off, d_off) + Rz(θ_off)·Rx(α)·com, rpy =
+(α, 0, θ_off); ``modified`` (F_i = I) xyz = com, rpy = 0. Pinocchio merges the fixed link
+``dh_i`` into joint i's body either way; the origin is what matters.
+
 Hence the world pose of link ``dh_i`` is ``B·A_1⋯A_i`` and that of ``tool`` is
 ``B·A_1⋯A_n·T_tool`` for every configuration, where q is the joint variable *without* the
 table's offset. All values are SI (m, rad, m/s, rad/s, N, N·m). Every number is written
@@ -45,7 +53,14 @@ from dh2urdf.names import (
 )
 from dh2urdf.table import DHJoint, DHTable, Transform
 
-__all__ = ["to_urdf", "to_yourdfpy", "write_urdf", "row_origins", "CAPSULE_MATERIAL"]
+__all__ = [
+    "to_urdf",
+    "to_yourdfpy",
+    "write_urdf",
+    "row_origins",
+    "inertial_origin",
+    "CAPSULE_MATERIAL",
+]
 
 #: Name of the material of the generated visuals.
 CAPSULE_MATERIAL = "dh2urdf_capsule"
@@ -85,6 +100,23 @@ def row_origins(joint: DHJoint, convention: str) -> tuple[Transform, Transform]:
     raise ValueError(f"unknown DH convention {convention!r}")
 
 
+def inertial_origin(joint: DHJoint, convention: str) -> Transform:
+    """Origin of ``link_i``'s ``<inertial>`` frame: the row's com (given in frame i) seen
+    from ``link_i``, with frame i's axes (see the module docstring). Exact (xyz, rpy)."""
+    dynamics = joint.dynamics
+    com = np.zeros(3) if dynamics is None else np.array(dynamics.com, dtype=float)
+    _, fixed = row_origins(joint, convention)
+    if fixed.is_identity:
+        return Transform(xyz=_point(com), rpy=(0.0, 0.0, 0.0))
+    rotation = (rot_z(joint.theta) @ rot_x(joint.alpha))[:3, :3]
+    xyz = np.array(fixed.xyz) + rotation @ com
+    return Transform(xyz=_point(xyz), rpy=fixed.rpy)
+
+
+def _point(v: np.ndarray) -> tuple[float, float, float]:
+    return (float(v[0]) + 0.0, float(v[1]) + 0.0, float(v[2]) + 0.0)
+
+
 def _limit(joint: DHJoint) -> yourdfpy.Limit:
     return yourdfpy.Limit(
         effort=joint.effort, velocity=joint.velocity, lower=joint.lower, upper=joint.upper
@@ -112,6 +144,14 @@ def _build(table: DHTable) -> tuple[yourdfpy.Robot, dict[tuple[str, str], Transf
     for i, joint in enumerate(table.joints, start=1):
         origin, fixed_part = row_origins(joint, table.convention)
         links[body_link(i)] = yourdfpy.Link(name=body_link(i))
+        if joint.dynamics is not None:
+            inertial = inertial_origin(joint, table.convention)
+            links[body_link(i)].inertial = yourdfpy.Inertial(
+                origin=inertial.matrix(),
+                mass=joint.dynamics.mass,
+                inertia=joint.dynamics.inertia_matrix(),
+            )
+            origins[("inertial", body_link(i))] = inertial
         joints.append(
             yourdfpy.Joint(
                 name=joint.name,
@@ -220,6 +260,17 @@ def to_urdf(table: DHTable) -> str:
             origin = origins.get((tag, element.get("name", "")))
             if origin is not None:
                 _set_origin(element, origin)
+    for link in root.iter("link"):
+        origin = origins.get(("inertial", link.get("name", "")))
+        inertial = link.find("inertial")
+        if origin is None or inertial is None:
+            continue
+        _set_origin(inertial, origin)
+        mass = inertial.find("mass")
+        mass.set("value", _num(float(mass.get("value"))))
+        inertia = inertial.find("inertia")
+        for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
+            inertia.set(key, _num(float(inertia.get(key))))
     # Re-write the remaining numeric attributes with repr precision as well.
     for element in root.iter("cylinder"):
         for key in ("radius", "length"):
