@@ -150,6 +150,28 @@ class DHRowDoc(Schema):
     upper: float | None = Field(None, description="Upper limit of q (table units).")
     velocity: float | None = Field(None, gt=0, description="Velocity limit (units per second).")
     effort: float | None = Field(None, gt=0, description="Effort limit (N·m or N).")
+    mass: float | None = Field(
+        None,
+        ge=0,
+        description="Mass of the link the row moves (kg, always SI); needed with com or "
+        "inertia. Rows without it give a link without inertia (dynamics answer 422 "
+        "missing-inertia).",
+    )
+    com: list[float] | None = Field(
+        None,
+        min_length=3,
+        max_length=3,
+        description="The link's centre of mass [x, y, z] in frame i, the DH frame at the end "
+        "of the row (as the Robotics Toolbox's r), in the table's length unit; default 0.",
+    )
+    inertia: list[float] | None = Field(
+        None,
+        min_length=6,
+        max_length=6,
+        description="The link's rotational inertia about its centre of mass in frame i's "
+        "axes, [ixx, ixy, ixz, iyy, iyz, izz] (kg·m², always SI): positive semi-definite, "
+        "each principal moment at most the sum of the other two; default 0 (a point mass).",
+    )
 
 
 class DHTableDoc(Schema):

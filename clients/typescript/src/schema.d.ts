@@ -1168,6 +1168,21 @@ export interface components {
              * @description Effort limit (N·m or N).
              */
             effort?: number | null;
+            /**
+             * Mass
+             * @description Mass of the link the row moves (kg, always SI); needed with com or inertia. Rows without it give a link without inertia (dynamics answer 422 missing-inertia).
+             */
+            mass?: number | null;
+            /**
+             * Com
+             * @description The link's centre of mass [x, y, z] in frame i, the DH frame at the end of the row (as the Robotics Toolbox's r), in the table's length unit; default 0.
+             */
+            com?: number[] | null;
+            /**
+             * Inertia
+             * @description The link's rotational inertia about its centre of mass in frame i's axes, [ixx, ixy, ixz, iyy, iyz, izz] (kg·m², always SI): positive semi-definite, each principal moment at most the sum of the other two; default 0 (a point mass).
+             */
+            inertia?: number[] | null;
         };
         /**
          * DHTableDoc

@@ -26,6 +26,13 @@ class DHRowDoc:
         upper (float | None | Unset): Upper limit of q (table units).
         velocity (float | None | Unset): Velocity limit (units per second).
         effort (float | None | Unset): Effort limit (N·m or N).
+        mass (float | None | Unset): Mass of the link the row moves (kg, always SI); needed with com or inertia. Rows
+            without it give a link without inertia (dynamics answer 422 missing-inertia).
+        com (list[float] | None | Unset): The link's centre of mass [x, y, z] in frame i, the DH frame at the end of the
+            row (as the Robotics Toolbox's r), in the table's length unit; default 0.
+        inertia (list[float] | None | Unset): The link's rotational inertia about its centre of mass in frame i's axes,
+            [ixx, ixy, ixz, iyy, iyz, izz] (kg·m², always SI): positive semi-definite, each principal moment at most the sum
+            of the other two; default 0 (a point mass).
     """
 
     a: float
@@ -38,6 +45,9 @@ class DHRowDoc:
     upper: float | None | Unset = UNSET
     velocity: float | None | Unset = UNSET
     effort: float | None | Unset = UNSET
+    mass: float | None | Unset = UNSET
+    com: list[float] | None | Unset = UNSET
+    inertia: list[float] | None | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
         a = self.a
@@ -86,6 +96,30 @@ class DHRowDoc:
         else:
             effort = self.effort
 
+        mass: float | None | Unset
+        if isinstance(self.mass, Unset):
+            mass = UNSET
+        else:
+            mass = self.mass
+
+        com: list[float] | None | Unset
+        if isinstance(self.com, Unset):
+            com = UNSET
+        elif isinstance(self.com, list):
+            com = self.com
+
+        else:
+            com = self.com
+
+        inertia: list[float] | None | Unset
+        if isinstance(self.inertia, Unset):
+            inertia = UNSET
+        elif isinstance(self.inertia, list):
+            inertia = self.inertia
+
+        else:
+            inertia = self.inertia
+
         field_dict: dict[str, Any] = {}
 
         field_dict.update(
@@ -108,6 +142,12 @@ class DHRowDoc:
             field_dict["velocity"] = velocity
         if effort is not UNSET:
             field_dict["effort"] = effort
+        if mass is not UNSET:
+            field_dict["mass"] = mass
+        if com is not UNSET:
+            field_dict["com"] = com
+        if inertia is not UNSET:
+            field_dict["inertia"] = inertia
 
         return field_dict
 
@@ -184,6 +224,49 @@ class DHRowDoc:
 
         effort = _parse_effort(d.pop("effort", UNSET))
 
+        def _parse_mass(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        mass = _parse_mass(d.pop("mass", UNSET))
+
+        def _parse_com(data: object) -> list[float] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                com_type_0 = cast(list[float], data)
+
+                return com_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None | Unset, data)
+
+        com = _parse_com(d.pop("com", UNSET))
+
+        def _parse_inertia(data: object) -> list[float] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                inertia_type_0 = cast(list[float], data)
+
+                return inertia_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None | Unset, data)
+
+        inertia = _parse_inertia(d.pop("inertia", UNSET))
+
         dh_row_doc = cls(
             a=a,
             alpha=alpha,
@@ -195,6 +278,9 @@ class DHRowDoc:
             upper=upper,
             velocity=velocity,
             effort=effort,
+            mass=mass,
+            com=com,
+            inertia=inertia,
         )
 
         return dh_row_doc
