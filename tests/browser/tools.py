@@ -187,3 +187,45 @@ def assert_same_pose(a: dict, b: dict, tol: float = 1e-9) -> None:
     np.testing.assert_allclose(a["position"], b["position"], atol=tol)
     qa, qb = np.array(a["orientation"]), np.array(b["orientation"])
     assert min(np.abs(qa - qb).max(), np.abs(qa + qb).max()) < tol, (qa, qb)
+
+
+# ------------------------------------------------------------------ dynamics (stubbed)
+def stub_dynamics(tab: Tab, answer) -> list[dict]:
+    """Answer the page's POST /robots/{id}/dynamics in the browser, without the server.
+
+    ``answer(robot_id, body)`` returns ``(status, json)``: a ``DynamicsResponse`` of the
+    contract (joint_names, torques, effort_limits, effort_ratios, binding_joint, …) or an
+    RFC 9457 problem. The request bodies the page sent are appended to the returned list.
+    The one place the browser tests stand in for the route: to test against the live
+    route, make this a no-op that returns an empty list.
+    """
+    import json
+
+    sent: list[dict] = []
+
+    def handle(route) -> None:
+        request = route.request
+        if request.method != "POST":
+            route.continue_()
+            return
+        robot_id = urlsplit(request.url).path.split("/")[2]
+        body = json.loads(request.post_data or "{}")
+        sent.append(body)
+        status, doc = answer(robot_id, body)
+        media = "application/json" if status < 400 else "application/problem+json"
+        route.fulfill(status=status, content_type=media, body=json.dumps(doc))
+
+    tab.page.route(re.compile(r".*/robots/[^/]+/dynamics$"), handle)
+    return sent
+
+
+def missing_inertia(robot_id: str, link: str) -> dict:
+    """The 422 problem of a robot without inertias (app/api/errors.py's shape)."""
+    return {
+        "type": "https://denavit.dev/problems/missing-inertia",
+        "title": "Unprocessable Content",
+        "status": 422,
+        "detail": f"link {link!r} has no inertia",
+        "field": "robot_id",
+        "instance": f"/robots/{robot_id}/dynamics",
+    }

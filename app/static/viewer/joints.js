@@ -1,6 +1,11 @@
 // Joint sliders within the limits of GET /robots/{id} and the pose of a chosen frame by
 // POST /robots/{id}/fk, shown next to the sliders (metres, quaternion [x, y, z, w]).
+// Under each slider a torque bar: |τ| / effort limit of POST /robots/{id}/dynamics at the
+// configuration, at rest (0–100 %, red past 100 %, the binding joint marked; the tooltip
+// gives τ and the limit). A robot without inertias (422 missing-inertia) shows no bars and
+// one line saying so; the torques never raise an error in the page's status line.
 import { Latest } from './latest.js';
+import { TorqueBars } from './torques.js';
 
 const fmt = (v) => v.map((x) => x.toFixed(6)).join(', ');
 
@@ -17,6 +22,7 @@ export class JointsPanel {
     this.frame = document.getElementById('frame-picker');
     this.readout = document.getElementById('fk-readout');
     this.fk = new Latest((q, frame) => this._fk(q, frame), (e) => viewer.report(e));
+    this.torques = new TorqueBars(viewer, document.getElementById('torque-note'));
     this.frame.addEventListener('change', () => this.update());
     document.getElementById('reset-neutral').addEventListener('click', () => {
       viewer.setQ(viewer.detail.neutral.slice(), 'neutral');
@@ -28,6 +34,7 @@ export class JointsPanel {
     this.frame.value = detail.end_effector;
     const box = document.getElementById('sliders');
     box.replaceChildren();
+    this.torques.reset();
     this.sliders = detail.joints.map((joint, i) => {
       const [lo, hi] = limitsOf(joint);
       const row = document.createElement('label');
@@ -43,10 +50,12 @@ export class JointsPanel {
         q[i] = Number(input.value);
         this.viewer.setQ(q, 'slider');
       });
-      row.append(name, input, value);
+      const bar = this.torques.bar(joint);
+      row.append(name, input, value, bar);
       box.append(row);
       return { input, value, joint };
     });
+    this.torques.build(detail);
   }
 
   // The configuration changed (from anywhere): sliders follow, FK is asked again.
@@ -57,6 +66,7 @@ export class JointsPanel {
       value.textContent = q[i].toFixed(joint.type === 'prismatic' ? 4 : 3);
     });
     this.fk.request(q.slice(), this.frame.value);
+    this.torques.update(q);
   }
 
   async _fk(q, frame) {

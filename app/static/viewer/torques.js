@@ -1,0 +1,101 @@
+// Torque-ratio bars of the joints panel: POST /robots/{id}/dynamics with {q} (the robot at
+// rest: the torques that hold it, N·m or N) on every configuration change, one request in
+// flight and the latest wins (Latest, as every live query of the viewer). Each joint's bar
+// is |τ| / effort limit (effort_ratios of the answer): 0–100 % wide, red ("over") past
+// 100 %, the binding joint marked; the tooltip gives τ and the limit. A joint without a
+// limit (null ratio) has an empty bar and says so. A robot without inertias answers 422
+// missing-inertia: no bars, one line "no inertias in this robot's description"; any other
+// failure is one line as well, never an error in the page's status. A URDF without any
+// <inertial> says the same without asking (the answer could only be that 422).
+import { Latest } from './latest.js';
+
+export const NO_INERTIAS = "no inertias in this robot's description";
+const MISSING_INERTIA = 'missing-inertia';
+
+const unit = (joint) => (joint && joint.type === 'prismatic' ? 'N' : 'N·m');
+
+export class TorqueBars {
+  constructor(viewer, note) {
+    this.viewer = viewer;
+    this.note = note;
+    this.bars = new Map(); // joint name -> {bar, fill, joint}
+    this.last = null; // {q, answer} of the last answer drawn
+    this.inertias = false; // whether the robot's URDF has any <inertial>
+    this.fetch = new Latest((q) => this._fetch(q), () => {});
+  }
+
+  // A new robot: its bars follow (an answer for the old one finds another map and is dropped).
+  reset() {
+    this.bars = new Map();
+  }
+
+  // One bar (hidden until an answer comes) for the slider row of `joint`.
+  bar(joint) {
+    const bar = document.createElement('span');
+    bar.className = 'torque-bar';
+    bar.dataset.joint = joint.name;
+    bar.hidden = true;
+    const fill = document.createElement('span');
+    fill.className = 'torque-fill';
+    bar.append(fill);
+    this.bars.set(joint.name, { bar, fill, joint });
+    return bar;
+  }
+
+  build() {
+    this.last = null;
+    const links = Object.values(this.viewer.robot?.root?.links || {});
+    this.inertias = links.some((l) => l.urdfNode?.querySelector?.('inertial'));
+    this._message(this.inertias ? '' : NO_INERTIAS);
+  }
+
+  update(q) {
+    if (this.inertias) this.fetch.request(q.slice());
+  }
+
+  _message(text) {
+    this.note.textContent = text;
+    this.note.hidden = !text;
+  }
+
+  _hide(text) {
+    this.bars.forEach(({ bar }) => { bar.hidden = true; });
+    this._message(text);
+  }
+
+  async _fetch(q) {
+    const v = this.viewer;
+    const bars = this.bars;
+    let answer;
+    try {
+      answer = await v.ask('/dynamics', { q });
+    } catch (err) {
+      if (bars !== this.bars) return;
+      const kind = String(err.problem?.type || '').split('/').pop();
+      this._hide(kind === MISSING_INERTIA ? NO_INERTIAS : `no torques: ${err.message || err}`);
+      return;
+    }
+    if (!answer || bars !== this.bars) return; // another robot
+    if (v.q.some((x, i) => x !== q[i]) && this.fetch.next !== null) return; // stale
+    this.last = { q, answer };
+    this._message('');
+    answer.joint_names.forEach((name, i) => {
+      const entry = bars.get(name);
+      if (!entry) return;
+      const { bar, fill, joint } = entry;
+      const tau = answer.torques[i];
+      const limit = answer.effort_limits[i];
+      const ratio = answer.effort_ratios[i];
+      const u = unit(joint);
+      bar.hidden = false;
+      bar.classList.toggle('no-limit', ratio === null);
+      bar.classList.toggle('over', ratio !== null && ratio > 1);
+      bar.classList.toggle('binding', name === answer.binding_joint);
+      fill.style.width = ratio === null ? '0%' : `${Math.min(ratio, 1) * 100}%`;
+      bar.title = `${name}: τ = ${tau.toFixed(3)} ${u}, ` + (ratio === null
+        ? 'no effort limit'
+        : `limit ${limit} ${u} (${(ratio * 100).toFixed(1)} %)`) +
+        (name === answer.binding_joint ? ' — binding joint' : '');
+    });
+  }
+}
