@@ -61,3 +61,25 @@ def test_dynamics_match_the_robotics_toolbox(registry, robot_id, index):
         rtol=0,
         atol=1e-9,
     )
+
+
+@pytest.mark.parametrize("q2", [0.0, 0.7, -2.3])
+def test_planar2_is_the_textbook_arm_of_two_solid_cylinders(registry, q2):
+    """robots/dh/planar2.yaml: l = 1.0, 0.8 m, m = 2.0, 1.6 kg, mid-link centres of mass,
+    solid cylinders of radius 0.03 m (I_zz = m(3r² + l²)/12); horizontal, so g = 0.
+    Spong, Hutchinson & Vidyasagar §7.4 give M and C."""
+    l1, m1, m2, r = 1.0, 2.0, 1.6, 0.03
+    c1, c2 = 0.5, 0.4
+    i1, i2 = m1 * (3 * r * r + 1.0) / 12, m2 * (3 * r * r + 0.64) / 12
+    q, qd = np.array([0.4, q2]), np.array([0.9, -1.3])
+    cos2, sin2 = np.cos(q2), np.sin(q2)
+    m11 = m1 * c1**2 + m2 * (l1**2 + c2**2 + 2 * l1 * c2 * cos2) + i1 + i2
+    m12 = m2 * (c2**2 + l1 * c2 * cos2) + i2
+    m22 = m2 * c2**2 + i2
+    h = -m2 * l1 * c2 * sin2
+    c = np.array([[h * qd[1], h * (qd[0] + qd[1])], [-h * qd[0], 0.0]])
+    d = compute_dynamics(registry.get("planar2"), q, qd)
+    np.testing.assert_allclose(d.mass_matrix, [[m11, m12], [m12, m22]], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(d.coriolis_matrix, c, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(d.gravity, 0.0, rtol=0, atol=1e-12)
+    assert d.mass == pytest.approx(m1 + m2, abs=1e-12)
