@@ -121,3 +121,36 @@ def test_switching_robots_redraws_the_bars_of_the_new_one(page: Tab) -> None:
     page.page.wait_for_function(f"denavit.viewer.detail.id === '{ROBOT}' && denavit.idle()")
     assert [b["visible"] for b in bars(page)] == [True] * 6
     assert page.page.locator("#torque-note").is_hidden()
+
+
+PARTIAL = {
+    "name": "partial_dyn",
+    "convention": "standard",
+    "joints": [
+        {"a": 0.5, "alpha": 0, "d": 0, "theta": 0, "mass": 1.0},
+        {"a": 0.4, "alpha": 0, "d": 0, "theta": 0},
+    ],
+}
+
+
+def test_the_pages_inertia_check_agrees_with_the_core(page: Tab) -> None:
+    """The page asks for torques only where the core would answer (check_inertias)."""
+    from app.kinematics.dynamics import check_inertias
+    from app.kinematics.errors import MissingInertiaError
+    from app.kinematics.models import RobotModel
+
+    assert page.http.post("/robots/dh", json=PARTIAL).status_code == 201
+    for robot_id in ["panda", "ur5", "puma560", "stanford_arm", "planar3r", "partial_dyn"]:
+        open_viewer(page, robot_id)
+        urdf = page.http.get(f"/robots/{robot_id}/urdf").text
+        try:
+            check_inertias(RobotModel(robot_id, urdf, ee_frame=None))
+            core = True
+        except MissingInertiaError:
+            core = False
+        drawn = page.page.evaluate(
+            "import('/static/viewer/torques.js')"
+            ".then((m) => m.hasInertias(denavit.viewer.robot.root))"
+        )
+        assert drawn == core, robot_id
+    assert core is False  # partial_dyn: row 2's link has none

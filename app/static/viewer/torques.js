@@ -5,12 +5,46 @@
 // 100 %, the binding joint marked; the tooltip gives τ and the limit. A joint without a
 // limit (null ratio) has an empty bar and says so. A robot without inertias answers 422
 // missing-inertia: no bars, one line "no inertias in this robot's description"; any other
-// failure is one line as well, never an error in the page's status. A URDF without any
-// <inertial> says the same without asking (the answer could only be that 422).
+// failure is one line as well, never an error in the page's status. A URDF in which some
+// moving body (a joint's child link with the links fixed to it) has no mass and no inertia
+// says the same without asking: the answer could only be that 422 (the core's check,
+// app/kinematics/dynamics.py check_inertias).
 import { Latest } from './latest.js';
 
 export const NO_INERTIAS = "no inertias in this robot's description";
 const MISSING_INERTIA = 'missing-inertia';
+
+const MIN_BODY = 1e-12; // kg and kg·m², the core's MIN_BODY_MASS
+
+// Whether a link's own <inertial> has a mass or a rotational inertia.
+function carries(link) {
+  const node = link.urdfNode?.querySelector?.(':scope > inertial');
+  if (!node) return false;
+  const mass = Number(node.querySelector('mass')?.getAttribute('value') || 0);
+  const inertia = node.querySelector('inertia');
+  const moments = ['ixx', 'iyy', 'izz'].map((k) => Math.abs(Number(inertia?.getAttribute(k) || 0)));
+  return mass > MIN_BODY || Math.max(...moments) > MIN_BODY;
+}
+
+// Whether the body that moves with `joint` (its child link and every link fixed to it)
+// carries inertia.
+function bodyCarries(joint) {
+  const stack = joint.children.filter((c) => c.isURDFLink);
+  while (stack.length) {
+    const link = stack.pop();
+    if (carries(link)) return true;
+    link.children
+      .filter((c) => c.isURDFJoint && c.jointType === 'fixed')
+      .forEach((j) => stack.push(...j.children.filter((c) => c.isURDFLink)));
+  }
+  return false;
+}
+
+// Whether every moving body of the robot carries inertia (else dynamics answer 422).
+export function hasInertias(root) {
+  const joints = Object.values(root?.joints || {}).filter((j) => j.jointType !== 'fixed');
+  return joints.length > 0 && joints.every(bodyCarries);
+}
 
 const unit = (joint) => (joint && joint.type === 'prismatic' ? 'N' : 'N·m');
 
@@ -20,7 +54,7 @@ export class TorqueBars {
     this.note = note;
     this.bars = new Map(); // joint name -> {bar, fill, joint}
     this.last = null; // {q, answer} of the last answer drawn
-    this.inertias = false; // whether the robot's URDF has any <inertial>
+    this.inertias = false; // whether every moving body of the robot's URDF carries inertia
     this.fetch = new Latest((q) => this._fetch(q), () => {});
   }
 
@@ -44,8 +78,7 @@ export class TorqueBars {
 
   build() {
     this.last = null;
-    const links = Object.values(this.viewer.robot?.root?.links || {});
-    this.inertias = links.some((l) => l.urdfNode?.querySelector?.('inertial'));
+    this.inertias = hasInertias(this.viewer.robot?.root);
     this._message(this.inertias ? '' : NO_INERTIAS);
   }
 
