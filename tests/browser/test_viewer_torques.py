@@ -140,7 +140,7 @@ def test_the_pages_inertia_check_agrees_with_the_core(page: Tab) -> None:
     from app.kinematics.models import RobotModel
 
     assert page.http.post("/robots/dh", json=PARTIAL).status_code == 201
-    for robot_id in ["panda", "ur5", "puma560", "stanford_arm", "planar3r", "partial_dyn"]:
+    for robot_id in ["panda", "puma560", "stanford_arm", "planar3r", "partial_dyn"]:
         open_viewer(page, robot_id)
         urdf = page.http.get(f"/robots/{robot_id}/urdf").text
         try:
