@@ -46,6 +46,9 @@ export function hasInertias(root) {
   return joints.length > 0 && joints.every(bodyCarries);
 }
 
+// τ for the tooltip: 3 decimals, without a "-0.000".
+const fmt = (x) => (Math.abs(x) < 5e-4 ? 0 : x).toFixed(3);
+
 const unit = (joint) => (joint && joint.type === 'prismatic' ? 'N' : 'N·m');
 
 export class TorqueBars {
@@ -125,7 +128,7 @@ export class TorqueBars {
       bar.classList.toggle('over', ratio !== null && ratio > 1);
       bar.classList.toggle('binding', name === answer.binding_joint);
       fill.style.width = ratio === null ? '0%' : `${Math.min(ratio, 1) * 100}%`;
-      bar.title = `${name}: τ = ${tau.toFixed(3)} ${u}, ` + (ratio === null
+      bar.title = `${name}: τ = ${fmt(tau)} ${u}, ` + (ratio === null
         ? 'no effort limit'
         : `limit ${limit} ${u} (${(ratio * 100).toFixed(1)} %)`) +
         (name === answer.binding_joint ? ' — binding joint' : '');
