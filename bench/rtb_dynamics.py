@@ -5,6 +5,10 @@ NumPy than the service, so it never runs in ``.venv``)::
 
     .venv-bench/bin/python bench/rtb_dynamics.py [tests/kinematics/data/rtb_dynamics.json]
 
+Besides, ``mdh3``: a modified-DH (Craig) arm of this script's own (:data:`MDH_ARM`, two
+revolute joints and a prismatic one, offsets, full inertias), the convention the catalog's
+robots do not use, built from the toolbox's ``RevoluteMDH``/``PrismaticMDH`` links.
+
 For each robot, at fixed-seed random states (q within the toolbox's joint limits, q̇ and q̈
 uniform in ±2 rad/s and ±3 rad/s²) it writes the toolbox's answers: ``rne`` (τ), ``gravload``
 (g), ``inertia`` (M), ``coriolis`` (C) and ``C·q̇``. The toolbox's models are the published
@@ -56,6 +60,7 @@ OVERRIDES = {
             "(0.066 + 0.0125 < 0.086); the catalog raises Izz to 0.0200",
         ),
     ],
+    "mdh3": [],
     "ur5_dh": [
         (
             0,
@@ -68,9 +73,74 @@ OVERRIDES = {
 }
 
 
+#: A modified-DH (Craig) arm of this script's own, 2 revolute joints and a prismatic one with
+#: every offset, twist and an off-axis com and full inertia: the convention the catalog's
+#: robots do not use. Rows as a dh2urdf table's (SI; ``inertia`` its six URDF entries);
+#: the test builds the same table from these rows.
+MDH_ARM = [
+    {
+        "type": "revolute",
+        "a": 0.0,
+        "alpha": 0.0,
+        "d": 0.3,
+        "theta": 0.2,
+        "mass": 4.0,
+        "com": [0.02, -0.01, -0.12],
+        "inertia": [0.05, 0.002, -0.001, 0.04, 0.003, 0.03],
+    },
+    {
+        "type": "revolute",
+        "a": 0.1,
+        "alpha": -1.5707963267948966,
+        "d": 0.05,
+        "theta": -0.4,
+        "mass": 3.0,
+        "com": [0.2, 0.01, 0.03],
+        "inertia": [0.01, 0.0, 0.002, 0.06, 0.0, 0.055],
+    },
+    {
+        "type": "prismatic",
+        "a": 0.45,
+        "alpha": 1.5707963267948966,
+        "d": 0.1,
+        "theta": 0.3,
+        "lower": 0.0,
+        "upper": 0.5,
+        "mass": 1.5,
+        "com": [0.0, 0.02, -0.15],
+        "inertia": [0.012, 0.001, 0.0, 0.012, -0.001, 0.004],
+    },
+]
+
+
+def _mdh_arm() -> rtb.DHRobot:
+    links = []
+    for row in MDH_ARM:
+        ixx, ixy, ixz, iyy, iyz, izz = row["inertia"]
+        inertia = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+        common = {
+            "a": row["a"],
+            "alpha": row["alpha"],
+            "m": row["mass"],
+            "r": row["com"],
+            "I": inertia,
+        }
+        if row["type"] == "prismatic":
+            link = rtb.PrismaticMDH(
+                theta=row["theta"], offset=row["d"], qlim=[row["lower"], row["upper"]], **common
+            )
+        else:
+            link = rtb.RevoluteMDH(d=row["d"], offset=row["theta"], **common)
+        links.append(link)
+    return rtb.DHRobot(links, name="mdh3")
+
+
 def model(robot_id: str) -> rtb.DHRobot:
     """The toolbox's model, rigid-body only (module docstring), overrides applied."""
-    robot = rtb.models.DH.Puma560() if robot_id == "puma560" else rtb.models.DH.UR5()
+    if robot_id == "mdh3":
+        robot = _mdh_arm()
+    else:
+        robot = rtb.models.DH.Puma560() if robot_id == "puma560" else rtb.models.DH.UR5()
     for link in robot.links:
         link.Jm = 0.0
         link.G = 1.0
@@ -83,7 +153,14 @@ def model(robot_id: str) -> rtb.DHRobot:
 
 
 def states(robot: rtb.DHRobot, rng: np.random.Generator) -> list[tuple[np.ndarray, ...]]:
-    lower, upper = robot.qlim
+    if robot.qlim is None or not np.all(np.isfinite(robot.qlim)):
+        lower = np.full(robot.n, -np.pi)
+        upper = np.full(robot.n, np.pi)
+        for j, link in enumerate(robot.links):
+            if link.qlim is not None and np.all(np.isfinite(link.qlim)):
+                lower[j], upper[j] = link.qlim
+    else:
+        lower, upper = robot.qlim
     lower = np.maximum(lower, -np.pi)
     upper = np.minimum(upper, np.pi)
     out = []
@@ -116,10 +193,13 @@ def main(argv: list[str]) -> int:
     out = Path(argv[1]) if len(argv) > 1 else OUT
     rng = np.random.default_rng(SEED)
     robots = {}
-    for robot_id in ("puma560", "ur5_dh"):
+    for robot_id in ("puma560", "ur5_dh", "mdh3"):
         robot = model(robot_id)
         robots[robot_id] = {
-            "model": type(robot).__name__,
+            "model": type(robot).__name__
+            if robot_id != "mdh3"
+            else "DHRobot (RevoluteMDH, PrismaticMDH) of MDH_ARM",
+            **({"rows": MDH_ARM} if robot_id == "mdh3" else {}),
             "overrides": [
                 {"link": i + 1, "attribute": a, "value": v, "why": why}
                 for i, a, v, why in OVERRIDES[robot_id]

@@ -1,12 +1,16 @@
 """The dynamics of the catalog's DH robots (puma560, ur5_dh: DH table → URDF by dh2urdf →
 Pinocchio) against the Robotics Toolbox's own DH models (fixture by bench/rtb_dynamics.py,
-``make rtb-fixtures``): τ (rne), g (gravload), M (inertia), C·q̇ and C (coriolis).
+``make rtb-fixtures``): τ (rne), g (gravload), M (inertia), C·q̇ and C (coriolis); and
+``mdh3``, a modified-DH arm (revolute, revolute, prismatic) whose rows the fixture holds,
+against the toolbox's RevoluteMDH/PrismaticMDH model of the same rows.
 
 The toolbox computes with its DH link frames directly (``r`` and ``I`` in frame i, the DH
 frame at the end of row i); the service with the URDF dh2urdf writes (``<inertial>`` on
 ``link_i``, whose frame is not frame i in the standard convention). Agreement to 1e-9 says
-the com and inertia land in the right frame; measured: ≤ 1.3e-14 N·m on τ, g and C·q̇,
-≤ 1.4e-15 on M.
+the com and inertia land in the right frame; measured on all three: ≤ 1.3e-14 N·m on τ,
+g and C·q̇, ≤ 1.4e-15 on M, ≤ 2.5e-15 on C. Putting the com in link_i's frame without the
+row's transform, or keeping link_i's axes for the inertia, fails it (puma560, ur5_dh); so
+does reading a modified row's com in frame i−1 (mdh3).
 """
 
 from __future__ import annotations
@@ -18,6 +22,8 @@ import numpy as np
 import pytest
 
 from app.kinematics.dynamics import compute_dynamics
+from app.kinematics.models import RobotModel
+from dh2urdf import DHTable, to_urdf
 
 FIXTURE = Path(__file__).with_name("data") / "rtb_dynamics.json"
 DOC = json.loads(FIXTURE.read_text(encoding="utf-8"))
@@ -35,8 +41,18 @@ CASES = [
 ]
 
 
-def test_fixture_is_the_rigid_body_model_of_both_robots():
-    assert set(DOC["robots"]) == {"puma560", "ur5_dh"}
+def robot_of(registry, robot_id: str) -> RobotModel:
+    if robot_id != "mdh3":
+        robot = registry.get(robot_id)
+        assert robot.joint_names == registry.dh_table(robot_id).joint_names
+        return robot
+    rows = DOC["robots"]["mdh3"]["rows"]
+    table = DHTable.from_dict({"name": "mdh3", "convention": "modified", "joints": rows})
+    return RobotModel("mdh3", to_urdf(table), ee_frame="tool")
+
+
+def test_fixture_is_the_rigid_body_model_of_the_robots():
+    assert set(DOC["robots"]) == {"puma560", "ur5_dh", "mdh3"}
     assert DOC["gravity"] == [0.0, 0.0, -9.81]
     assert all(len(r["states"]) >= 8 for r in DOC["robots"].values())
 
@@ -44,8 +60,7 @@ def test_fixture_is_the_rigid_body_model_of_both_robots():
 @pytest.mark.parametrize("robot_id, index", CASES)
 def test_dynamics_match_the_robotics_toolbox(registry, robot_id, index):
     state = DOC["robots"][robot_id]["states"][index]
-    robot = registry.get(robot_id)
-    assert robot.joint_names == registry.dh_table(robot_id).joint_names
+    robot = robot_of(registry, robot_id)
     q, qd, qdd = (np.array(state[k]) for k in ("q", "qd", "qdd"))
     d = compute_dynamics(robot, q, qd, qdd)
     for key, attribute in QUANTITIES.items():
