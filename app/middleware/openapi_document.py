@@ -75,8 +75,7 @@ TAGS = {
     "kinematics": "Forward kinematics, Jacobians and velocities.",
     "inverse kinematics": "Inverse kinematics: single targets, batches and Cartesian paths.",
     "analysis": "Manipulability and statics.",
-    "dynamics": "Joint torques from the URDF inertias: inverse dynamics, mass matrix, "
-    "payloads.",
+    "dynamics": "Joint torques from the URDF inertias: inverse dynamics, mass matrix, payloads.",
     "collisions": "Self- and environment collision checks, and named scenes of obstacles.",
     "robots": "The robot catalog, robot imports and uploads, and their files.",
     "reachability": "Reachability maps: background builds, queries and slices.",

@@ -87,6 +87,9 @@ async def compute_dynamics_route(robot: RobotDep, body: DynamicsRequest) -> ORJS
     qdd = rates(robot, grp, body.accelerations, "accelerations")
     load = _load(robot, grp, body.payload)
     wrench = body.wrench
+    wrench_frame = None if wrench is None else default_frame(robot, grp, wrench.frame)
+    if wrench_frame is not None:
+        robot.frame_id(wrench_frame, field="wrench.frame")
     dyn = compute_dynamics(
         robot,
         q,
@@ -94,7 +97,7 @@ async def compute_dynamics_route(robot: RobotDep, body: DynamicsRequest) -> ORJS
         qdd,
         load=load,
         wrench=None if wrench is None else np.array(wrench.values),
-        wrench_frame=None if wrench is None else default_frame(robot, grp, wrench.frame),
+        wrench_frame=wrench_frame,
         wrench_reference="world" if wrench is None else wrench.reference,
     )
     if grp is None:

@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import Annotated
 
 import numpy as np
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, Field, Strict
 from typing_extensions import TypeAliasType
 
 from app.api.schemas.analysis import Load
@@ -37,11 +37,17 @@ from app.kinematics.models import RobotModel
 #: The largest number of joints a request names (as for configurations).
 MAX_JOINTS = 1024
 
+#: A joint rate as the request gives it: a JSON number (ints accepted; strings and booleans
+#: rejected). NaN and ±Infinity (which some clients send) pass here so that
+#: :func:`~app.kinematics.dynamics.check_rates` refuses them naming ``velocities.3`` or
+#: ``velocities.<joint>`` (a union's validation error would name its branch).
+Rate = Annotated[float, Strict(), Field(allow_inf_nan=True)]
+
 #: Joint name → rate: one named component for joint velocities and accelerations by name.
 JointRates = TypeAliasType(
     "JointRates",
     Annotated[
-        dict[str, Finite],
+        dict[str, Rate],
         Field(
             max_length=MAX_JOINTS,
             description="Joint name → value (rad/s or m/s for velocities, rad/s² or m/s² for "
@@ -51,7 +57,7 @@ JointRates = TypeAliasType(
     ],
 )
 #: Joint rates as a list in joint order or a map by name.
-Rates = Annotated[list[Finite], Field(max_length=MAX_JOINTS)] | JointRates
+Rates = Annotated[list[Rate], Field(max_length=MAX_JOINTS)] | JointRates
 
 RATES_DOC = (
     "One value per joint in joint order (with `group`: one per joint of the group, in its "
@@ -61,7 +67,9 @@ RATES_DOC = (
 
 
 def rates(
-    robot: RobotModel, grp: Group | None, values: Sequence[float] | Mapping[str, float] | None,
+    robot: RobotModel,
+    grp: Group | None,
+    values: Sequence[float] | Mapping[str, float] | None,
     field: str,
 ) -> np.ndarray:
     """Joint rates (velocities or accelerations) in wire order from a list (all joints, or
@@ -75,7 +83,7 @@ def rates(
         given: dict[str, float] = {}
         for name, value in values.items():
             path = f"{field}.{name}"
-            check_rates(np.array([value]), path)
+            check_rates(np.asarray(float(value)), path)
             if name in followers:
                 given[name] = float(value)
             else:
@@ -166,9 +174,7 @@ class DynamicsRequest(ConfigurationIn):
     """A state (q, q̇, q̈), an optional payload and an optional wrench."""
 
     velocities: Rates | None = Field(None, description="Joint velocities q̇. " + RATES_DOC)
-    accelerations: Rates | None = Field(
-        None, description="Joint accelerations q̈. " + RATES_DOC
-    )
+    accelerations: Rates | None = Field(None, description="Joint accelerations q̈. " + RATES_DOC)
     payload: PayloadIn | None = Field(None, description="A load fixed to a frame.")
     wrench: WrenchIn | None = Field(
         None, description="A wrench a frame exerts on its environment (adds Jᵀ·F)."
