@@ -339,6 +339,8 @@ BAD = [
     ("dynamics", {"q": Q_UR5, "velocities": [0, 0, 0, NAN, 0, 0]}, "velocities.3"),
     ("dynamics", {"q": Q_UR5, "velocities": [0, 0, 0, 2e6, 0, 0]}, "velocities.3"),
     ("dynamics", {"q": Q_UR5, "velocities": {"elbw": 1.0}}, "velocities.elbw"),
+    ("dynamics", {"q": Q_UR5, "velocities": ["a", 0, 0, 0, 0, 0]}, "velocities.0"),
+    ("dynamics", {"q": Q_UR5, "velocities": "fast"}, "velocities"),
     ("dynamics", {"q": Q_UR5, "velocities": {"elbow_joint": NAN}}, "velocities.elbow_joint"),
     ("dynamics", {"q": Q_UR5, "accelerations": [0.0] * 7}, "accelerations"),
     ("dynamics", {"q": Q_UR5, "accelerations": [0, 0, 0, 0, 0, -1e7]}, "accelerations.5"),

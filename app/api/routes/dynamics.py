@@ -38,9 +38,11 @@ from app.kinematics.dynamics import (
     Payload,
     check_inertias,
     check_rates,
-    compute_dynamics,
     gravity_torques,
     inverse_dynamics,
+)
+from app.kinematics.dynamics import (
+    compute_dynamics as dynamics_core,
 )
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group, default_frame, group
@@ -73,7 +75,7 @@ def _binding(names: list[str], ratios: np.ndarray) -> str | None:
     response_model=DynamicsResponse,
     responses=RESPONSES,
 )
-async def compute_dynamics_route(robot: RobotDep, body: DynamicsRequest) -> ORJSONResponse:
+async def compute_dynamics(robot: RobotDep, body: DynamicsRequest) -> ORJSONResponse:
     """Joint torques τ = M(q)·q̈ + C(q, q̇)·q̇ + g(q) + Jᵀ·F at one state, each term, the mass
     and Coriolis matrices, the centre of mass and the effort ratios.
 
@@ -90,7 +92,7 @@ async def compute_dynamics_route(robot: RobotDep, body: DynamicsRequest) -> ORJS
     wrench_frame = None if wrench is None else default_frame(robot, grp, wrench.frame)
     if wrench_frame is not None:
         robot.frame_id(wrench_frame, field="wrench.frame")
-    dyn = compute_dynamics(
+    dyn = dynamics_core(
         robot,
         q,
         qd,

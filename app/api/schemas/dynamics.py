@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import Annotated
 
 import numpy as np
-from pydantic import BaseModel, Field, Strict
+from pydantic import BaseModel, Field, Strict, WrapValidator
 from typing_extensions import TypeAliasType
 
 from app.api.schemas.analysis import Load
@@ -28,6 +28,7 @@ from app.api.schemas.common import (
     Vec3Out,
     group_field,
 )
+from app.api.schemas.timing import _one_form as one_form  # the list-or-map error namer
 from app.api.schemas.values import JacobianReference
 from app.kinematics.dynamics import MAX_JOINT_RATE, Payload, check_rates, payload
 from app.kinematics.errors import InvalidInputError
@@ -57,7 +58,9 @@ JointRates = TypeAliasType(
     ],
 )
 #: Joint rates as a list in joint order or a map by name.
-Rates = Annotated[list[Rate], Field(max_length=MAX_JOINTS)] | JointRates
+Rates = Annotated[
+    Annotated[list[Rate], Field(max_length=MAX_JOINTS)] | JointRates, WrapValidator(one_form)
+]
 
 RATES_DOC = (
     "One value per joint in joint order (with `group`: one per joint of the group, in its "
