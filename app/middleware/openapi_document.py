@@ -199,7 +199,7 @@ STREAM_PATH = "/robots/{robot_id}/stream"
 STREAM_OPERATION: dict[str, Any] = {
     "tags": ["stream"],
     "summary": "Robot stream (WebSocket)",
-    "description": "FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): "
+    "description": "FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): "
     "connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot "
     "describe the messages; a plain HTTP request is answered 426 naming the upgrade. With "
     "DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first "

@@ -20,6 +20,7 @@ from fastapi import APIRouter, Request
 
 from app.api.body import body_schema, decode_body, group_configurations
 from app.api.deps import RobotDep, SettingsDep
+from app.api.dynamics_answers import dynamics_answer, load_of
 from app.api.errors import ERROR_RESPONSES
 from app.api.limits import check_batch_size
 from app.api.offload import offload
@@ -31,18 +32,12 @@ from app.api.schemas.dynamics import (
     DynamicsResponse,
     MaxPayloadRequest,
     MaxPayloadResponse,
-    PayloadIn,
-    rates,
 )
 from app.kinematics.dynamics import (
-    Payload,
     check_inertias,
     check_rates,
     gravity_torques,
     inverse_dynamics,
-)
-from app.kinematics.dynamics import (
-    compute_dynamics as dynamics_core,
 )
 from app.kinematics.errors import InvalidInputError
 from app.kinematics.groups import Group, default_frame, group
@@ -52,21 +47,6 @@ from app.kinematics.payload import MaxPayload, max_payloads
 router = APIRouter(prefix="/robots/{robot_id}", tags=["dynamics"])
 
 RESPONSES = {k: ERROR_RESPONSES[k] for k in (400, 404, 422)}
-
-
-def _load(
-    robot: RobotModel, grp: Group | None, body: PayloadIn | None, field: str = "payload"
-) -> Payload | None:
-    return None if body is None else body.to_core(robot, default_frame(robot, grp, None), field)
-
-
-def _binding(names: list[str], ratios: np.ndarray) -> str | None:
-    """The joint with the largest ratio (None when every ratio is NaN: no limits)."""
-    best, name = -1.0, None
-    for value, joint in zip(ratios.tolist(), names, strict=True):
-        if value > best:  # False for NaN
-            best, name = value, joint
-    return name
 
 
 @router.post(
@@ -83,53 +63,7 @@ async def compute_dynamics(robot: RobotDep, body: DynamicsRequest) -> ORJSONResp
     frame; the wrench is the one the frame exerts on its environment (as in statics). With
     `group`, every vector and matrix is over the group's joints.
     """
-    grp, q = body.group_config(robot)
-    check_inertias(robot)
-    qd = rates(robot, grp, body.velocities, "velocities")
-    qdd = rates(robot, grp, body.accelerations, "accelerations")
-    load = _load(robot, grp, body.payload)
-    wrench = body.wrench
-    wrench_frame = None if wrench is None else default_frame(robot, grp, wrench.frame)
-    if wrench_frame is not None:
-        robot.frame_id(wrench_frame, field="wrench.frame")
-    dyn = dynamics_core(
-        robot,
-        q,
-        qd,
-        qdd,
-        load=load,
-        wrench=None if wrench is None else np.array(wrench.values),
-        wrench_frame=wrench_frame,
-        wrench_reference="world" if wrench is None else wrench.reference,
-    )
-    if grp is None:
-        names, idx = robot.joint_names, slice(None)
-        mass_matrix, coriolis_matrix, binding = dyn.mass_matrix, dyn.coriolis_matrix, dyn.binding
-    else:
-        names, idx = list(grp.joints), grp.indices
-        cols = np.ix_(idx, idx)
-        mass_matrix, coriolis_matrix = dyn.mass_matrix[cols], dyn.coriolis_matrix[cols]
-        binding = _binding(names, dyn.ratios[idx])
-    return ORJSONResponse(
-        {
-            "robot_id": robot.id,
-            "q": q,
-            "joint_names": names,
-            "torques": dyn.torques[idx],
-            "gravity_torques": dyn.gravity[idx],
-            "coriolis_torques": dyn.coriolis[idx],
-            "inertial_torques": dyn.inertial[idx],
-            "wrench_torques": dyn.wrench_torques[idx],
-            "mass_matrix": mass_matrix,
-            "coriolis_matrix": coriolis_matrix,
-            "center_of_mass": dyn.com,
-            "total_mass": dyn.mass,
-            "effort_limits": dyn.effort_limits[idx],  # NaN → null
-            "effort_ratios": dyn.ratios[idx],
-            "binding_joint": binding,
-            "payload": None if load is None else load.to_json(),
-        }
-    )
+    return ORJSONResponse(dynamics_answer(robot, body))
 
 
 def _rate_rows(
@@ -171,7 +105,7 @@ def _batch(robot: RobotModel, raw: bytes, limit: int) -> dict[str, Any]:
     check_inertias(robot)
     qds = _rate_rows(robot, grp, rows.get("velocities"), len(qs), width, "velocities")
     qdds = _rate_rows(robot, grp, rows.get("accelerations"), len(qs), width, "accelerations")
-    load = _load(robot, grp, body.payload)
+    load = load_of(robot, grp, body.payload)
     torques = inverse_dynamics(robot, qs, qds, qdds, load=load)
     gravity = torques if qds is None and qdds is None else gravity_torques(robot, qs, load=load)
     names = robot.joint_names if grp is None else list(grp.joints)
@@ -233,7 +167,7 @@ def _max_payload(robot: RobotModel, body: MaxPayloadRequest, limit: int) -> dict
             ) from None
     frame = default_frame(robot, grp, body.frame)
     check_inertias(robot)
-    load = _load(robot, grp, body.payload)
+    load = load_of(robot, grp, body.payload)
     results = max_payloads(robot, qs, frame, body.com, load=load)
     k = int(np.argmin([r.mass for r in results]))
     out: dict[str, Any] = {

@@ -872,7 +872,7 @@ export interface paths {
         };
         /**
          * Robot stream (WebSocket)
-         * @description FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first message is `{"token": ...}`).
+         * @description FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first message is `{"token": ...}`).
          */
         get: operations["get_robot_stream"];
         put?: never;
