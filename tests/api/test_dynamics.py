@@ -287,9 +287,12 @@ def test_max_payload_at_one_configuration(client):
 
 
 def test_max_payload_along_a_path_finds_the_minimum(client):
-    path = [[0.2, 0.3], [0.0, 0.0], [0.9, -0.4], [1.2, 0.5]]
+    # the last two reach back past the vertical: levers (and b_i) of either sign
+    path = [[0.2, 0.3], [0.0, 0.0], [0.9, -0.4], [1.2, 0.5], [2.0, 0.3]]
     b = post(client, f"/robots/{ARM}/dynamics/max_payload", {"path": path})
     masses = [hand_bounds(q).min() for q in path]
+    for q, sample in zip(path, b["samples"], strict=True):
+        assert list(sample["per_joint"].values()) == pytest.approx(hand_bounds(q), rel=1e-12)
     k = int(np.argmin(masses))
     assert b["min_sample"] == k == 1  # stretched out horizontally
     assert b["min_max_payload"] == pytest.approx(masses[k], rel=1e-12)
@@ -403,3 +406,36 @@ def test_bad_input_names_the_field(client, path, body, field):
         headers={"content-type": "application/json"},
     )
     problem(r, 422, field)
+
+
+def test_payload_frame_defaults_to_the_groups_tip(client):
+    """Panda's `arm_and_hand` group ends at the left finger (its SRDF tip), not at the
+    robot's tip: a payload without a frame hangs there."""
+    q = [0.1, -0.4, 0.2, -2.0, 0.3, 1.5, 0.6, 0.02]
+    grouped = post(
+        client,
+        "/robots/panda/dynamics",
+        {"q": q, "group": "arm_and_hand", "payload": {"mass": 1.0}},
+    )
+    explicit = post(
+        client,
+        "/robots/panda/dynamics",
+        {"q": q, "payload": {"mass": 1.0, "frame": "panda_leftfinger"}},
+    )
+    at_tip = post(client, "/robots/panda/dynamics", {"q": q, "payload": {"mass": 1.0}})
+    assert grouped["payload"]["frame"] == "panda_leftfinger"
+    assert grouped["gravity_torques"] == explicit["gravity_torques"]
+    assert grouped["gravity_torques"] != at_tip["gravity_torques"]
+
+
+def test_a_mimic_followers_rate_must_follow_its_leader(client):
+    """A ROS JointState names the Panda's second finger too: accepted at multiplier × the
+    leader's rate (the same answer as without it), refused otherwise naming it."""
+    q = [0.1, -0.4, 0.2, -2.0, 0.3, 1.5, 0.6, 0.02]
+    leader = {"panda_finger_joint1": 0.2}
+    alone = post(client, "/robots/panda/dynamics", {"q": q, "velocities": leader})
+    both = {**leader, "panda_finger_joint2": 0.2}
+    assert post(client, "/robots/panda/dynamics", {"q": q, "velocities": both}) == alone
+    bad = {**leader, "panda_finger_joint2": 0.3}
+    r = client.post("/robots/panda/dynamics", json={"q": q, "accelerations": bad})
+    problem(r, 422, "accelerations.panda_finger_joint2")
