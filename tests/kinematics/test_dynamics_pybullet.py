@@ -10,6 +10,13 @@ gravity −9.81 along z. pybullet knows no mimic joints: the Panda's second fing
 of its own, driven at ``q2 = multiplier·q1 + offset`` (its rates × multiplier), and by
 virtual work the leader's torque is ``τ_finger1 + multiplier·τ_finger2``; the mass matrix
 likewise ``Gᵀ M G``.
+
+Measured (relative to the largest entry): τ, g and M within 2e-15 for the UR5 and the Kinova;
+the Panda's τ within 6e-12 and M within 1.1e-10, and every payload case within 6e-11:
+Bullet's URDF loader diagonalises each inertia tensor numerically (its principal axes
+become the link's inertial frame), which costs ~1e-10 where a tensor has products of
+inertia (the Panda's links, the payload here); with those set to 0 the Panda agrees within
+1e-15. Hence :data:`RTOL` = 1e-9.
 """
 
 from __future__ import annotations
