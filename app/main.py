@@ -52,16 +52,16 @@ from app.workers import procwatch
 
 DESCRIPTION = """\
 Kinematics of robot arms over HTTP: forward kinematics, Jacobians, inverse kinematics,
-manipulability, statics and collision checks, computed by Pinocchio.
+manipulability, statics, rigid-body dynamics and collision checks, computed by Pinocchio.
 
 Conventions: SI units; quaternions [x, y, z, w]; rpy with R = Rz(yaw)·Ry(pitch)·Rx(roll);
 poses in the robot's root frame; configurations in the joint order of GET /robots/{id}
 (continuous joints as one angle); errors as RFC 9457 problem details.
 
 Real-time clients: the WebSocket `WS /robots/{robot_id}/stream` (not listed below, as
-OpenAPI has no WebSockets) answers FK, Jacobian and IK requests, the bodies of these
-endpoints as JSON messages (or little-endian float64 binary frames), in order, the last IK
-solution seeding the next. See docs/stream.md.
+OpenAPI has no WebSockets) answers FK, Jacobian, IK and dynamics requests, the bodies of
+these endpoints as JSON messages (or little-endian float64 binary frames for FK, Jacobian
+and IK), in order, the last IK solution seeding the next. See docs/stream.md.
 """
 
 log = logging.getLogger("denavit")

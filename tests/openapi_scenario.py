@@ -94,6 +94,8 @@ _OBSTACLE = {
     "pose": {"position": [1.2, 0.9, 0.0]},
 }
 _TARGET = {"position": [1.2, 0.6, 0.0]}
+# Dynamics need the links' inertias: the catalog's UR5 has them (planar2 has none).
+_UR5_Q = [0.0, -1.2, 1.1, -0.5, 1.2, 0.0]  # rad
 
 #: The scenario, in order (see the module docstring).
 EXCHANGES: list[dict[str, Any]] = [
@@ -208,6 +210,43 @@ EXCHANGES: list[dict[str, Any]] = [
         "method": "POST",
         "path": f"/robots/{ROBOT}/statics",
         "json": {"q": Q, "wrench": [0.0, -10.0, 0.0, 0.0, 0.0, 0.0]},
+    },
+    # Dynamics
+    {
+        "name": "dynamics",
+        "operation": "compute_dynamics",
+        "method": "POST",
+        "path": "/robots/ur5/dynamics",
+        "json": {
+            "q": _UR5_Q,
+            "velocities": [0.5, 0.0, -0.3, 0.0, 0.0, 0.0],
+            "accelerations": {"shoulder_lift_joint": 1.0},
+            "payload": {"mass": 2.0, "com": [0.0, 0.0, 0.05]},
+        },
+    },
+    {
+        "name": "dynamics-batch",
+        "operation": "compute_dynamics_batch",
+        "method": "POST",
+        "path": "/robots/ur5/dynamics/batch",
+        "json": {
+            "configurations": [[0.0] * 6, _UR5_Q],
+            "velocities": [[0.0] * 6, [0.5, 0.0, -0.3, 0.0, 0.0, 0.0]],
+        },
+    },
+    {
+        "name": "max-payload",
+        "operation": "compute_max_payload",
+        "method": "POST",
+        "path": "/robots/ur5/dynamics/max_payload",
+        "json": {"q": _UR5_Q, "com": [0.0, 0.0, 0.05]},
+    },
+    {
+        "name": "max-payload-path",
+        "operation": "compute_max_payload",
+        "method": "POST",
+        "path": "/robots/ur5/dynamics/max_payload",
+        "json": {"path": [_UR5_Q, [0.0, -1.57, 0.0, -1.57, 0.0, 0.0], [0.0] * 6]},
     },
     {
         "name": "collisions",
@@ -465,6 +504,13 @@ EXCHANGES: list[dict[str, Any]] = [
         "path": f"/robots/{ROBOT}/fk",
         "json": {"q": [0.5]},
         "shared": True,
+    },
+    {
+        "name": "missing-inertia",
+        "operation": "compute_dynamics",
+        "method": "POST",
+        "path": "/robots/two_link/dynamics",
+        "json": {"q": [0.5, 1.0]},
     },
     {
         "name": "upgrade-required",

@@ -116,9 +116,11 @@ def test_joint_maps_and_configurations_are_shared(schema) -> None:
         and isinstance(v.get("additionalProperties"), dict)
         and v["additionalProperties"].get("type") == "number"
     ]
-    # Joint → limit maps of time parameterization are not joint positions.
+    # Joint → limit maps of time parameterization and joint → rate maps of the dynamics
+    # (velocities, accelerations: one JointRates) are not joint positions.
     assert sorted(maps) == [
         ("JointPositions",),
+        ("JointRates",),
         ("TimingIn", "properties", "acceleration_limits", "anyOf", "1"),
         ("TimingIn", "properties", "velocity_limits", "anyOf", "1"),
     ]

@@ -83,6 +83,19 @@ def _model_schemas(model: type[BaseModel]) -> dict[str, Any]:
     return {model.__name__: schema, **defs}
 
 
+def _without_null_defaults(schema: Any) -> Any:
+    """``schema`` without its ``"default": null`` members (recursively)."""
+    if isinstance(schema, dict):
+        return {
+            k: _without_null_defaults(v)
+            for k, v in schema.items()
+            if not (k == "default" and v is None)
+        }
+    if isinstance(schema, list):
+        return [_without_null_defaults(v) for v in schema]
+    return schema
+
+
 def document_errors(
     schema: dict[str, Any], guarded: set[str], extra_models: Sequence[type[BaseModel]] = ()
 ) -> dict[str, Any]:
@@ -128,7 +141,11 @@ def document_errors(
         components.setdefault(name, body)
     for model in extra_models:
         for name, body in _model_schemas(model).items():
-            if components.setdefault(name, body) != body:
+            # FastAPI leaves out null defaults: a model both kinds of route use (a nested
+            # PayloadIn) is the same schema but for them
+            if _without_null_defaults(components.setdefault(name, body)) != (
+                _without_null_defaults(body)
+            ):
                 raise RuntimeError(f"two different request schemas are named {name!r}")
     text = repr(schema.get("paths"))
     for name in ("HTTPValidationError", "ValidationError"):

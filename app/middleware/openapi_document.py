@@ -75,6 +75,7 @@ TAGS = {
     "kinematics": "Forward kinematics, Jacobians and velocities.",
     "inverse kinematics": "Inverse kinematics: single targets, batches and Cartesian paths.",
     "analysis": "Manipulability and statics.",
+    "dynamics": "Joint torques from the URDF inertias: inverse dynamics, mass matrix, payloads.",
     "collisions": "Self- and environment collision checks, and named scenes of obstacles.",
     "robots": "The robot catalog, robot imports and uploads, and their files.",
     "reachability": "Reachability maps: background builds, queries and slices.",
@@ -198,7 +199,7 @@ STREAM_PATH = "/robots/{robot_id}/stream"
 STREAM_OPERATION: dict[str, Any] = {
     "tags": ["stream"],
     "summary": "Robot stream (WebSocket)",
-    "description": "FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): "
+    "description": "FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): "
     "connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot "
     "describe the messages; a plain HTTP request is answered 426 naming the upgrade. With "
     "DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first "

@@ -146,7 +146,15 @@ BAD = [
         "timeout_ms",
         "ik",
     ),  # fmt: skip
-]
+    ('{"id": 13, "op": "dynamics", "q": [0, 0, 0, 0, 0, 0], "velocities": [1]}', 422,
+     "velocities", "dynamics"),
+    ('{"id": 14, "op": "dynamics", "q": [0, 0, 0, 0, 0, 0], "velocities": {"x": 1}}', 422,
+     "velocities.x", "dynamics"),
+    ('{"id": 15, "op": "dynamics", "q": [0, 0, 0, 0, 0, 0], "payload": {"mass": -1}}', 422,
+     "payload.mass", "dynamics"),
+    ('{"id": 16, "op": "dynamics", "q": [0, 0, 0, 0, 0, 0], "accelerations": '
+     '[0, 0, 2e6, 0, 0, 0]}', 422, "accelerations.2", "dynamics"),
+]  # fmt: skip
 
 
 def test_bad_messages_get_the_http_error_and_the_socket_stays_usable(client) -> None:
@@ -182,6 +190,44 @@ def test_bad_messages_get_the_http_error_and_the_socket_stays_usable(client) -> 
             assert "finite" in err["error"]["detail"]
         send(ws, {"id": "ok", "op": "fk", "q": Q_UR5})
         assert ws.receive_json()["id"] == "ok"
+
+
+def test_dynamics_answers_as_http(client) -> None:
+    """The dynamics op answers exactly the HTTP endpoint's body (UR5; the Panda with its
+    mimic finger, a group, rate maps, a payload and a wrench), in order among other ops."""
+    rng = np.random.default_rng(4)
+    bodies = [
+        ("ur5", {"q": Q_UR5}),
+        (
+            "ur5",
+            {
+                "q": Q_UR5,
+                "velocities": rng.normal(size=6).tolist(),
+                "accelerations": {"elbow_joint": 0.7},
+                "payload": {
+                    "mass": 1.2,
+                    "com": [0, 0, 0.04],
+                    "inertia": [0.01, 0, 0, 0.01, 0, 0.01],
+                },
+                "wrench": {"values": [1, 2, -3, 0, 0.1, 0], "reference": "local"},
+            },
+        ),
+        ("panda", {"q": Q_PANDA, "velocities": rng.normal(size=8).tolist()}),
+        ("panda", {"q": Q_PANDA[:7], "group": "arm", "accelerations": [0.3] * 7}),
+    ]
+    for robot_id in ("ur5", "panda"):
+        with client.websocket_connect(f"/robots/{robot_id}/stream") as ws:
+            mine = [b for rid, b in bodies if rid == robot_id]
+            for i, body in enumerate(mine):  # pipelined, with an fk between them
+                send(ws, {"id": i, "op": "dynamics", **body})
+                send(ws, {"id": f"fk{i}", "op": "fk", "q": body["q"]})
+            for i, body in enumerate(mine):
+                ans = ws.receive_json()
+                assert (ans["id"], ans["op"]) == (i, "dynamics")
+                http = client.post(f"/robots/{robot_id}/dynamics", json=body)
+                assert http.status_code == 200, http.text
+                assert answer_body(ans) == http.json()
+                assert ws.receive_json()["id"] == f"fk{i}"
 
 
 def test_binary_frames_round_trip(client) -> None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 from app.api.routes import (
     analysis,
     collisions,
+    dynamics,
     fk,
     health,
     ik,
@@ -31,6 +32,7 @@ ROUTERS = [
     packages.router,  # before robots: /robots/package is not the robot 'package'
     robots.router,
     analysis.router,
+    dynamics.router,
     reachability.router,
     collisions.router,
     scenes.router,

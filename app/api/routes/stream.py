@@ -1,11 +1,12 @@
-"""``WS /robots/{robot_id}/stream``: FK, Jacobian and IK requests on one WebSocket.
+"""``WS /robots/{robot_id}/stream``: FK, Jacobian, IK and dynamics requests on one WebSocket.
 
 The protocol is in docs/stream.md; messages are parsed in :mod:`app.api.schemas.stream`.
 Answers are built by the HTTP routes' own functions (:func:`~app.api.answers.fk_answer`,
-:func:`~app.api.answers.jacobian_answer`, :func:`~app.api.ik_plan.prepare_ik` and
-:func:`~app.api.ik_answers.ik_answer`), with the same budget rules (``ik_max_timeout_ms``;
-an IK budget above 5 ms or collision checks run in the work pool), and errors carry the HTTP
-route's problem body.
+:func:`~app.api.answers.jacobian_answer`, :func:`~app.api.ik_plan.prepare_ik`,
+:func:`~app.api.ik_answers.ik_answer` and
+:func:`~app.api.dynamics_answers.dynamics_answer`), with the same budget rules
+(``ik_max_timeout_ms``; an IK budget above 5 ms or collision checks run in the work pool),
+and errors carry the HTTP route's problem body.
 
 Answers go out in order. A reader task reads the socket while fewer than
 ``stream_max_in_flight`` messages are read but unanswered; at that many it stops reading
@@ -30,6 +31,7 @@ from starlette.websockets import WebSocketDisconnect, WebSocketState
 
 from app.api.answers import fk_answer, jacobian_answer
 from app.api.deps import load_robot
+from app.api.dynamics_answers import dynamics_answer
 from app.api.errors import json_bytes, kinematics_problem, problem, problem_body
 from app.api.ik_answers import ik_answer
 from app.api.ik_plan import IKPlan, plan_ik, prepare_ik
@@ -106,7 +108,7 @@ async def stream_over_http(robot_id: str) -> Response:
 
 @router.websocket("/robots/{robot_id}/stream")
 async def robot_stream(websocket: WebSocket, robot_id: str) -> None:
-    """FK, Jacobian and IK of one robot on a WebSocket (docs/stream.md).
+    """FK, Jacobian, IK and dynamics of one robot on a WebSocket (docs/stream.md).
 
     Notes
     -----
@@ -337,6 +339,8 @@ class _Session:
             return fk_answer(robot, body)  # type: ignore[arg-type]
         if message.op == "jacobian":
             return jacobian_answer(robot, body)  # type: ignore[arg-type]
+        if message.op == "dynamics":
+            return dynamics_answer(robot, body)  # type: ignore[arg-type]
         check_budget(self.settings, body.timeout_ms)  # type: ignore[union-attr]
         plan, solve = prepare_ik(self.ws, robot, body, self.last_q)  # type: ignore[arg-type]
         self.ik_body = body  # type: ignore[assignment]

@@ -1,10 +1,11 @@
 """The messages of ``WS /robots/{robot_id}/stream`` (docs/stream.md): parsing and framing.
 
-Text messages are JSON objects ``{"id": <any JSON scalar>, "op": "fk" | "jacobian" | "ik",
-...}`` whose other members are exactly the body of the HTTP endpoint of ``op``, validated by
-the same request model; answers are ``{"id", "op", ...}`` plus the HTTP answer's body, or
-``{"id", "op", "error": <the HTTP route's problem body>}``. ``{"token": "..."}`` authenticates
-(answered with ``{"id", "op": "auth", "authenticated": true}``).
+Text messages are JSON objects ``{"id": <any JSON scalar>, "op": "fk" | "jacobian" | "ik"
+| "dynamics", ...}`` whose other members are exactly the body of the HTTP endpoint of
+``op``, validated by the same request model; answers are ``{"id", "op", ...}`` plus the
+HTTP answer's body, or ``{"id", "op", "error": <the HTTP route's problem body>}``.
+``{"token": "..."}`` authenticates (answered with ``{"id", "op": "auth", "authenticated":
+true}``).
 
 Binary frames are little-endian float64 arrays: ``[op code, id, payload...]``
 (:data:`OP_CODES`; see :func:`parse_binary` and :func:`binary_answer`).
@@ -23,6 +24,7 @@ from pydantic import ValidationError
 
 from app.api.errors import NESTED_TOO_DEEPLY, problem_body, validation_problem
 from app.api.schemas.common import Schema
+from app.api.schemas.dynamics import DynamicsRequest
 from app.api.schemas.fk import FKRequest
 from app.api.schemas.ik import IKRequest
 from app.api.schemas.jacobian import JacobianRequest
@@ -30,11 +32,16 @@ from app.kinematics.ik import IKResult
 from app.kinematics.text import printable
 
 #: Each op: its HTTP request model (the message's body is validated by it).
-OPS: dict[str, type[Schema]] = {"fk": FKRequest, "jacobian": JacobianRequest, "ik": IKRequest}
-#: The op codes of binary frames (the frame's first float).
+OPS: dict[str, type[Schema]] = {
+    "fk": FKRequest,
+    "jacobian": JacobianRequest,
+    "ik": IKRequest,
+    "dynamics": DynamicsRequest,
+}
+#: The op codes of binary frames (the frame's first float); dynamics is a text op only.
 OP_CODES: dict[str, int] = {"fk": 1, "jacobian": 2, "ik": 3}
 _OP_OF_CODE = {float(code): op for op, code in OP_CODES.items()}
-_OPS_TEXT = "fk, jacobian or ik"
+_OPS_TEXT = "fk, jacobian, ik or dynamics"
 #: Floats of a binary IK target: position [x, y, z] (m), quaternion [x, y, z, w].
 POSE_FLOATS = 7
 LITTLE_F8 = np.dtype("<f8")

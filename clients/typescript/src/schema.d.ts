@@ -455,6 +455,74 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/robots/{robot_id}/dynamics": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Compute Dynamics
+         * @description Joint torques τ = M(q)·q̈ + C(q, q̇)·q̇ + g(q) + Jᵀ·F at one state, each term, the mass
+         *     and Coriolis matrices, the centre of mass and the effort ratios.
+         *
+         *     Velocities and accelerations are zeros when absent; a payload is a rigid body fixed to a
+         *     frame; the wrench is the one the frame exerts on its environment (as in statics). With
+         *     `group`, every vector and matrix is over the group's joints.
+         */
+        post: operations["compute_dynamics"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/robots/{robot_id}/dynamics/batch": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Compute Dynamics Batch
+         * @description Joint torques τ (RNEA) and gravity torques g(q) for many states (q, q̇, q̈), with an
+         *     optional payload, computed off the event loop; up to ``DENAVIT_MAX_BATCH`` states.
+         */
+        post: operations["compute_dynamics_batch"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/robots/{robot_id}/dynamics/max_payload": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Compute Max Payload
+         * @description The largest payload mass the joints' effort limits hold at rest, at one configuration
+         *     or along a path (its minimum and the sample it occurs at), the limiting joint and each
+         *     joint's bound. A payload that loads no joint with a limit is unbounded (null).
+         */
+        post: operations["compute_max_payload"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/robots/{robot_id}/reachability": {
         parameters: {
             query?: never;
@@ -804,7 +872,7 @@ export interface paths {
         };
         /**
          * Robot stream (WebSocket)
-         * @description FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first message is `{"token": ...}`).
+         * @description FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the bearer token (or the first message is `{"token": ...}`).
          */
         get: operations["get_robot_stream"];
         put?: never;
@@ -1253,6 +1321,134 @@ export interface components {
              * @default rad
              */
             angle?: components["schemas"]["AngleUnit"];
+        };
+        /**
+         * DynamicsBatchResponse
+         * @description Row i belongs to state i; columns are `joint_names`.
+         */
+        DynamicsBatchResponse: {
+            /** Robot Id */
+            robot_id: string;
+            /** Joint Names */
+            joint_names: string[];
+            /**
+             * Torques
+             * @description N×n joint torques τ (N·m, N).
+             */
+            torques: number[][];
+            /**
+             * Gravity Torques
+             * @description N×n gravity torques g(q).
+             */
+            gravity_torques: number[][];
+            /** @description The payload included, or null. */
+            payload: components["schemas"]["PayloadOut"] | null;
+        };
+        /**
+         * DynamicsRequest
+         * @description A state (q, q̇, q̈), an optional payload and an optional wrench.
+         */
+        DynamicsRequest: {
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
+            /**
+             * Group
+             * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
+             */
+            group?: string | null;
+            /**
+             * Velocities
+             * @description Joint velocities q̇. One value per joint in joint order (with `group`: one per joint of the group, in its order, is accepted too; the others take 0), or a joint name → value map; zeros when absent. Each value within ±1e+06.
+             */
+            velocities?: number[] | components["schemas"]["JointRates"] | null;
+            /**
+             * Accelerations
+             * @description Joint accelerations q̈. One value per joint in joint order (with `group`: one per joint of the group, in its order, is accepted too; the others take 0), or a joint name → value map; zeros when absent. Each value within ±1e+06.
+             */
+            accelerations?: number[] | components["schemas"]["JointRates"] | null;
+            /** @description A load fixed to a frame. */
+            payload?: components["schemas"]["PayloadIn"] | null;
+            /** @description A wrench a frame exerts on its environment (adds Jᵀ·F). */
+            wrench?: components["schemas"]["WrenchIn"] | null;
+        };
+        /**
+         * DynamicsResponse
+         * @description τ = M(q)·q̈ + C(q, q̇)·q̇ + g(q) + Jᵀ·F and its parts, over `joint_names` (the robot's
+         *     joints, or with `group` the group's).
+         */
+        DynamicsResponse: {
+            /** Robot Id */
+            robot_id: string;
+            q: components["schemas"]["Configuration"];
+            /**
+             * Joint Names
+             * @description The joints of every vector and matrix, in order.
+             */
+            joint_names: string[];
+            /**
+             * Torques
+             * @description τ, the joint torques (N·m; N for prismatic).
+             */
+            torques: number[];
+            /**
+             * Gravity Torques
+             * @description g(q): the torques holding the arm still.
+             */
+            gravity_torques: number[];
+            /**
+             * Coriolis Torques
+             * @description C(q, q̇)·q̇: Coriolis and centrifugal.
+             */
+            coriolis_torques: number[];
+            /**
+             * Inertial Torques
+             * @description M(q)·q̈.
+             */
+            inertial_torques: number[];
+            /**
+             * Wrench Torques
+             * @description Jᵀ·F (zeros without a wrench).
+             */
+            wrench_torques: number[];
+            /**
+             * Mass Matrix
+             * @description M(q), n×n, symmetric positive definite (kg·m², kg for prismatic joints).
+             */
+            mass_matrix: number[][];
+            /**
+             * Coriolis Matrix
+             * @description C(q, q̇), n×n (Christoffel symbols: Ṁ − 2C is skew-symmetric).
+             */
+            coriolis_matrix: number[][];
+            /**
+             * Center Of Mass
+             * @description Centre of mass of the robot and payload (m, world frame).
+             */
+            center_of_mass: number[];
+            /**
+             * Total Mass
+             * @description Mass of the robot and payload (kg).
+             */
+            total_mass: number;
+            /**
+             * Effort Limits
+             * @description URDF effort limits (N·m, N); null where the URDF gives none.
+             */
+            effort_limits: (number | null)[];
+            /**
+             * Effort Ratios
+             * @description |τ| / effort limit; null where there is no limit.
+             */
+            effort_ratios: (number | null)[];
+            /**
+             * Binding Joint
+             * @description The joint with the largest effort ratio; null when no joint has a limit.
+             */
+            binding_joint: string | null;
+            /** @description The payload included, or null. */
+            payload: components["schemas"]["PayloadOut"] | null;
         };
         /**
          * Ellipsoid
@@ -1888,6 +2084,10 @@ export interface components {
         JointPositions: {
             [key: string]: number;
         };
+        /** @description Joint name → value (rad/s or m/s for velocities, rad/s² or m/s² for accelerations); joints not named take 0. A mimic follower may be named when its value equals multiplier × its leader's. */
+        JointRates: {
+            [key: string]: number;
+        };
         /** @enum {string} */
         LengthUnit: "m" | "cm" | "mm";
         /**
@@ -2140,6 +2340,144 @@ export interface components {
              * @default 0.01
              */
             orientation?: number;
+        };
+        /**
+         * MaxPayloadRequest
+         * @description One configuration (`q` or `joint_positions`) or a `path` of configurations, the point
+         *     the payload hangs from, and a tool already attached.
+         */
+        MaxPayloadRequest: {
+            /** @description One value per actuated joint, in the order of GET /robots/{id} (rad for revolute and continuous joints, m for prismatic ones); with `group`, one per joint of the group (in the group's order) is accepted too. */
+            q?: components["schemas"]["Configuration"] | null;
+            /** @description Joint name → value (rad or m); joints not given take their neutral value. Mimic joints may be named (a ROS JointState as is): their value must equal multiplier × leader + offset within 1e-9 (see mimic_joints of GET /robots/{id}). */
+            joint_positions?: components["schemas"]["JointPositions"] | null;
+            /**
+             * Group
+             * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
+             */
+            group?: string | null;
+            /**
+             * Path
+             * @description N configurations in joint order (with `group`: rows of the group's joints are accepted too), instead of `q`/`joint_positions`.
+             */
+            path?: number[][] | null;
+            /**
+             * Frame
+             * @description The frame the payload hangs from; default the robot's tip (with `group`: the group's tip).
+             */
+            frame?: string | null;
+            /**
+             * Com
+             * @description The payload's centre of mass (m) in the frame's axes.
+             * @default [
+             *       0,
+             *       0,
+             *       0
+             *     ]
+             */
+            com?: number[];
+            /** @description A load already attached (a tool): its weight counts. */
+            payload?: components["schemas"]["PayloadIn"] | null;
+        };
+        /**
+         * MaxPayloadResponse
+         * @description At one configuration, its bound; along a path, the bound of the sample where it is
+         *     smallest (`min_sample`) and every sample's.
+         */
+        MaxPayloadResponse: {
+            /**
+             * Max Payload
+             * @description The largest payload (kg) every joint's effort limit holds at rest; null = unbounded (the payload loads no joint that has a limit); 0 when the arm cannot hold itself.
+             */
+            max_payload: number | null;
+            /**
+             * Limiting Joint
+             * @description The joint whose limit sets max_payload; null when unbounded.
+             */
+            limiting_joint: string | null;
+            /**
+             * Per Joint
+             * @description Each joint's own bound (kg); null where the joint has no limit or the payload does not load it.
+             */
+            per_joint: {
+                [key: string]: number | null;
+            };
+            /**
+             * Gravity Torques
+             * @description g(q) of the robot and any attached tool, without the payload (N·m, N).
+             */
+            gravity_torques: number[];
+            /**
+             * Torques At Max
+             * @description g(q) with max_payload attached (= gravity_torques when unbounded).
+             */
+            torques_at_max: number[];
+            /**
+             * Holds Itself
+             * @description Every |g_i| ≤ its limit without the payload.
+             */
+            holds_itself: boolean;
+            /** Robot Id */
+            robot_id: string;
+            /** Frame */
+            frame: string;
+            /** Com */
+            com: number[];
+            /** Joint Names */
+            joint_names: string[];
+            /**
+             * Min Max Payload
+             * @description Along a path: the smallest max_payload over its samples (null: unbounded everywhere, or no path).
+             */
+            min_max_payload?: number | null;
+            /**
+             * Min Sample
+             * @description Along a path: the sample where max_payload is smallest.
+             */
+            min_sample?: number | null;
+            /**
+             * Samples
+             * @description Along a path: each sample's bound, in order; null without a path.
+             */
+            samples?: components["schemas"]["MaxPayloadSample"][] | null;
+        };
+        /**
+         * MaxPayloadSample
+         * @description The payload bound at one configuration.
+         */
+        MaxPayloadSample: {
+            /**
+             * Max Payload
+             * @description The largest payload (kg) every joint's effort limit holds at rest; null = unbounded (the payload loads no joint that has a limit); 0 when the arm cannot hold itself.
+             */
+            max_payload: number | null;
+            /**
+             * Limiting Joint
+             * @description The joint whose limit sets max_payload; null when unbounded.
+             */
+            limiting_joint: string | null;
+            /**
+             * Per Joint
+             * @description Each joint's own bound (kg); null where the joint has no limit or the payload does not load it.
+             */
+            per_joint: {
+                [key: string]: number | null;
+            };
+            /**
+             * Gravity Torques
+             * @description g(q) of the robot and any attached tool, without the payload (N·m, N).
+             */
+            gravity_torques: number[];
+            /**
+             * Torques At Max
+             * @description g(q) with max_payload attached (= gravity_torques when unbounded).
+             */
+            torques_at_max: number[];
+            /**
+             * Holds Itself
+             * @description Every |g_i| ≤ its limit without the payload.
+             */
+            holds_itself: boolean;
         };
         /**
          * MaxStep
@@ -2492,6 +2830,60 @@ export interface components {
             solver_version: string;
             /** @description With the request's `timing`: times, velocities and accelerations of the points (null otherwise). */
             timing: components["schemas"]["TimingOut"] | null;
+        };
+        /**
+         * PayloadIn
+         * @description A rigid load fixed to a frame: its mass, centre of mass and rotational inertia.
+         */
+        PayloadIn: {
+            /**
+             * Mass
+             * @description Mass (kg), within [0, 10⁶].
+             */
+            mass: number;
+            /**
+             * Frame
+             * @description The frame the load is fixed to; default the robot's tip (with `group`: the group's tip).
+             */
+            frame?: string | null;
+            /**
+             * Com
+             * @description Its centre of mass (m) in the frame's axes, from the frame's origin.
+             * @default [
+             *       0,
+             *       0,
+             *       0
+             *     ]
+             */
+            com?: number[];
+            /**
+             * Inertia
+             * @description Rotational inertia about the centre of mass in the frame's axes, the six URDF entries [ixx, ixy, ixz, iyy, iyz, izz] (kg·m²); absent: a point mass. It must be one a rigid body has (positive semi-definite, triangle inequality).
+             */
+            inertia?: number[] | null;
+        };
+        /**
+         * PayloadOut
+         * @description The payload the answer includes (the request's, with its defaults filled in).
+         */
+        PayloadOut: {
+            /**
+             * Mass
+             * @description kg.
+             */
+            mass: number;
+            /** Frame */
+            frame: string;
+            /**
+             * Com
+             * @description m, in the frame's axes.
+             */
+            com: number[];
+            /**
+             * Inertia
+             * @description [ixx, ixy, ixz, iyy, iyz, izz] about the centre of mass (kg·m²).
+             */
+            inertia: number[];
         };
         /**
          * Pose
@@ -3071,6 +3463,27 @@ export interface components {
             sigma_min?: number | null;
         };
         /**
+         * WrenchIn
+         * @description A wrench a frame exerts on its environment (as in statics: τ = Jᵀ·F).
+         */
+        WrenchIn: {
+            /**
+             * Frame
+             * @description Frame; default the end effector (with `group`: the group's tip).
+             */
+            frame?: string | null;
+            /**
+             * @description Axes of the wrench (as for the Jacobian). world: force and moment about the frame origin, world axes | local: frame axes | world_spatial: moment about the world origin.
+             * @default world
+             */
+            reference?: components["schemas"]["JacobianReference"];
+            /**
+             * Values
+             * @description [fx, fy, fz, mx, my, mz] (N, N·m): the wrench the frame exerts on its environment.
+             */
+            values: number[];
+        };
+        /**
          * ManipulabilityBatchRequest
          * @description Many configurations, one task.
          */
@@ -3108,6 +3521,40 @@ export interface components {
              * @description N configurations, each one value per joint in joint order (rad, m); with `group`, rows of the group's joints only are accepted too (others neutral).
              */
             configurations: number[][];
+            /**
+             * Group
+             * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
+             * @default null
+             */
+            group?: string | null;
+        };
+        /**
+         * DynamicsBatchRequest
+         * @description Many states (q, q̇, q̈), one optional payload.
+         */
+        DynamicsBatchRequest: {
+            /**
+             * Configurations
+             * @description N configurations, each one value per joint in joint order (rad, m); with `group`, rows of the group's joints only are accepted too (others neutral).
+             */
+            configurations: number[][];
+            /**
+             * Velocities
+             * @description N rows of joint velocities, as wide as `configurations`' rows; zeros when absent.
+             * @default null
+             */
+            velocities?: number[][] | null;
+            /**
+             * Accelerations
+             * @description N rows of joint accelerations, as wide as `configurations`' rows; zeros when absent.
+             * @default null
+             */
+            accelerations?: number[][] | null;
+            /**
+             * @description A load fixed to a frame.
+             * @default null
+             */
+            payload?: components["schemas"]["PayloadIn"] | null;
             /**
              * Group
              * @description A planning group of the robot's SRDF (GET /robots/{id} lists them). With a group, the configuration may hold the group's joints only (in the group's order; the other joints at neutral, or at the seed's values for IK), the default frame is the group's tip, and Jacobians and IK move only the group's joints.
@@ -4847,6 +5294,261 @@ export interface operations {
                 };
                 content: {
                     "application/json": components["schemas"]["StaticsResponse"];
+                };
+            };
+            /** @description Malformed request body. */
+            400: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description Unknown robot, frame or joint. */
+            404: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description A field failed validation; `field` names it. */
+            422: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+        };
+    };
+    compute_dynamics: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                /** @description Robot id, as listed by GET /robots. */
+                robot_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                "application/json": components["schemas"]["DynamicsRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["DynamicsResponse"];
+                };
+            };
+            /** @description Malformed request body. */
+            400: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description Unknown robot, frame or joint. */
+            404: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description A field failed validation; `field` names it. */
+            422: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+        };
+    };
+    compute_dynamics_batch: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                /** @description Robot id, as listed by GET /robots. */
+                robot_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                "application/json": components["schemas"]["DynamicsBatchRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["DynamicsBatchResponse"];
+                };
+            };
+            /** @description Malformed request body. */
+            400: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description Unknown robot, frame or joint. */
+            404: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The request body exceeds DENAVIT_MAX_BODY_BYTES. */
+            413: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description A field failed validation; `field` names it. */
+            422: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+            /** @description The service cannot serve this now: not started, storage unavailable, or shutting down (the request was cut off by the graceful-shutdown timeout; `Retry-After`). Send it again later. */
+            503: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    "Retry-After": components["headers"]["Retry-After"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/problem+json": components["schemas"]["Problem"];
+                };
+            };
+        };
+    };
+    compute_max_payload: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                /** @description Robot id, as listed by GET /robots. */
+                robot_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                "application/json": components["schemas"]["MaxPayloadRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    "X-Request-ID": components["headers"]["X-Request-ID"];
+                    "X-Content-Type-Options": components["headers"]["X-Content-Type-Options"];
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["MaxPayloadResponse"];
                 };
             };
             /** @description Malformed request body. */

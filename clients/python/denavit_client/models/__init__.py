@@ -18,6 +18,10 @@ from .dh_row_doc import DHRowDoc
 from .dh_table_doc import DHTableDoc
 from .dh_transform_doc import DHTransformDoc
 from .dh_units_doc import DHUnitsDoc
+from .dynamics_batch_request import DynamicsBatchRequest
+from .dynamics_batch_response import DynamicsBatchResponse
+from .dynamics_request import DynamicsRequest
+from .dynamics_response import DynamicsResponse
 from .ellipsoid import Ellipsoid
 from .end_effector_out import EndEffectorOut
 from .field_error import FieldError
@@ -49,6 +53,7 @@ from .job_status import JobStatus
 from .joint_limits import JointLimits
 from .joint_out import JointOut
 from .joint_positions import JointPositions
+from .joint_rates import JointRates
 from .length_unit import LengthUnit
 from .line_segment import LineSegment
 from .manipulability_batch_request import ManipulabilityBatchRequest
@@ -59,6 +64,11 @@ from .map_bounds import MapBounds
 from .map_info import MapInfo
 from .map_list import MapList
 from .max_deviation import MaxDeviation
+from .max_payload_request import MaxPayloadRequest
+from .max_payload_response import MaxPayloadResponse
+from .max_payload_response_per_joint import MaxPayloadResponsePerJoint
+from .max_payload_sample import MaxPayloadSample
+from .max_payload_sample_per_joint import MaxPayloadSamplePerJoint
 from .max_step import MaxStep
 from .mimic_joint_out import MimicJointOut
 from .named_state_out import NamedStateOut
@@ -72,6 +82,8 @@ from .path_failure_reason import PathFailureReason
 from .path_point_out import PathPointOut
 from .path_request import PathRequest
 from .path_response import PathResponse
+from .payload_in import PayloadIn
+from .payload_out import PayloadOut
 from .pose import Pose
 from .problem import Problem
 from .progress_out import ProgressOut
@@ -101,6 +113,7 @@ from .urdf_upload import UrdfUpload
 from .velocity_direction import VelocityDirection
 from .velocity_request import VelocityRequest
 from .velocity_response import VelocityResponse
+from .wrench_in import WrenchIn
 
 __all__ = (
     "AngleUnit",
@@ -121,6 +134,10 @@ __all__ = (
     "DHTableDoc",
     "DHTransformDoc",
     "DHUnitsDoc",
+    "DynamicsBatchRequest",
+    "DynamicsBatchResponse",
+    "DynamicsRequest",
+    "DynamicsResponse",
     "Ellipsoid",
     "EndEffectorOut",
     "FieldError",
@@ -152,6 +169,7 @@ __all__ = (
     "JointLimits",
     "JointOut",
     "JointPositions",
+    "JointRates",
     "LengthUnit",
     "LineSegment",
     "ManipulabilityBatchRequest",
@@ -162,6 +180,11 @@ __all__ = (
     "MapInfo",
     "MapList",
     "MaxDeviation",
+    "MaxPayloadRequest",
+    "MaxPayloadResponse",
+    "MaxPayloadResponsePerJoint",
+    "MaxPayloadSample",
+    "MaxPayloadSamplePerJoint",
     "MaxStep",
     "MimicJointOut",
     "NamedStateOut",
@@ -175,6 +198,8 @@ __all__ = (
     "PathPointOut",
     "PathRequest",
     "PathResponse",
+    "PayloadIn",
+    "PayloadOut",
     "Pose",
     "Problem",
     "ProgressOut",
@@ -204,4 +229,5 @@ __all__ = (
     "VelocityDirection",
     "VelocityRequest",
     "VelocityResponse",
+    "WrenchIn",
 )

@@ -70,10 +70,10 @@ def sync_detailed(
 ) -> Response[Any | Problem]:
     """Robot stream (WebSocket)
 
-     FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an
-    HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request
-    is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the
-    bearer token (or the first message is `{"token": ...}`).
+     FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): connect with `ws://`
+    (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP
+    request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries
+    the bearer token (or the first message is `{"token": ...}`).
 
     Args:
         robot_id (str):
@@ -104,10 +104,10 @@ def sync(
 ) -> Any | Problem | None:
     """Robot stream (WebSocket)
 
-     FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an
-    HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request
-    is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the
-    bearer token (or the first message is `{"token": ...}`).
+     FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): connect with `ws://`
+    (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP
+    request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries
+    the bearer token (or the first message is `{"token": ...}`).
 
     Args:
         robot_id (str):
@@ -133,10 +133,10 @@ async def asyncio_detailed(
 ) -> Response[Any | Problem]:
     """Robot stream (WebSocket)
 
-     FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an
-    HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request
-    is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the
-    bearer token (or the first message is `{"token": ...}`).
+     FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): connect with `ws://`
+    (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP
+    request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries
+    the bearer token (or the first message is `{"token": ...}`).
 
     Args:
         robot_id (str):
@@ -165,10 +165,10 @@ async def asyncio(
 ) -> Any | Problem | None:
     """Robot stream (WebSocket)
 
-     FK, Jacobian and IK of one robot over a WebSocket (docs/stream.md): connect with `ws://` (an
-    HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP request
-    is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries the
-    bearer token (or the first message is `{"token": ...}`).
+     FK, Jacobian, IK and dynamics of one robot over a WebSocket (docs/stream.md): connect with `ws://`
+    (an HTTP/1.1 `Upgrade: websocket` request). OpenAPI cannot describe the messages; a plain HTTP
+    request is answered 426 naming the upgrade. With DENAVIT_API_TOKEN set, the upgrade request carries
+    the bearer token (or the first message is `{"token": ...}`).
 
     Args:
         robot_id (str):
